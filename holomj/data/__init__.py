@@ -1,0 +1,1 @@
+"""Package data: built-in materials, category tables, the default asset library, examples."""

@@ -1,0 +1,148 @@
+"""The ``holomj`` command line: thin wrappers that build a config and call one library function.
+
+Bad input prints one line on stderr and exits with 2; failures exit with 1. Nothing prompts.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from collections.abc import Callable
+from pathlib import Path
+from typing import Annotated, Any, TypeVar
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from holomj.errors import HolomjError, InputError
+
+app = typer.Typer(
+    name="holomj",
+    help="Physically valid indoor scenes for MuJoCo.",
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    add_completion=False,
+)
+out_console = Console()
+err_console = Console(stderr=True, highlight=False, soft_wrap=True)
+
+T = TypeVar("T")
+FORMATS = ("holomj", "procthor", "holodeck", "scenedef")
+
+
+def _guard(job: Callable[[], T]) -> T:
+    """Run ``job``; a HolomjError becomes one line on stderr and its exit code."""
+    try:
+        return job()
+    except HolomjError as err:
+        err_console.print(f"error: {err.one_line()}", markup=False)
+        raise typer.Exit(code=err.exit_code) from None
+
+
+def _emit_json(data: Any) -> None:
+    sys.stdout.write(json.dumps(data, indent=2, sort_keys=True) + "\n")
+
+
+@app.command("compile")
+def compile_command(
+    input_path: Annotated[Path, typer.Argument(metavar="INPUT", help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="Output folder to create.")],
+    fmt: Annotated[str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")] = None,
+    library: Annotated[Path | None, typer.Option("--library", help="Asset library folder (default: the built-in one).")] = None,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="Replace OUT if it exists.")] = False,
+    check_seconds: Annotated[float, typer.Option("--check-seconds", min=0.0, max=60.0, help="Seconds to simulate as a smoke test (0 skips).")] = 1.0,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
+) -> None:
+    """Compile a scene or house file into a self-contained MuJoCo package in OUT."""
+    from holomj.pipeline import compile_file
+
+    if fmt is not None and fmt not in FORMATS:
+        _guard(lambda: _raise(InputError(f"unknown format {fmt!r}", where="--format", fix=f"use one of: {', '.join(FORMATS)}")))
+    report = _guard(
+        lambda: compile_file(
+            input_path, out, library_path=library, fmt=fmt, overwrite=overwrite, check_seconds=check_seconds
+        )
+    )
+    if as_json:
+        _emit_json(report.to_dict())
+    elif not quiet:
+        scene, model = report.scene, report.model
+        out_console.print(
+            f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
+        )
+        out_console.print(
+            f"  {len(scene['rooms'])} rooms, {scene['walls']} walls, {scene['doors']} doors, "
+            f"{scene['windows']} windows, {scene['objects']} objects; "
+            f"{model['bodies']} bodies, {model['geoms']} geoms, {model['total_mass_kg']} kg"
+        )
+        if report.substitutions:
+            out_console.print(f"  {len(report.substitutions)} assets substituted (see import_report.json)")
+        for warning in report.warnings:
+            out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
+        if report.sim_warnings:
+            out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
+
+
+def _raise(err: HolomjError) -> None:
+    raise err
+
+
+@app.command("info")
+def info_command(
+    folder: Annotated[Path, typer.Argument(metavar="OUT", help="A folder written by 'holomj compile'.")],
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """Rooms, objects, bodies, geoms and mass of an exported scene."""
+    from holomj.export.info import folder_summary
+
+    summary = _guard(lambda: folder_summary(folder))
+    if as_json:
+        _emit_json(summary)
+        return
+    table = Table(title=f"{summary['name']} ({summary['folder']})")
+    table.add_column("room")
+    table.add_column("type")
+    table.add_column("area m²", justify="right")
+    for room in summary["rooms"]:
+        table.add_row(room["id"], room["type"], f"{room['area_m2']:.2f}")
+    out_console.print(table)
+    model = summary["model"]
+    out_console.print(
+        f"walls {summary['walls']}, doors {summary['doors']}, windows {summary['windows']}, "
+        f"objects {summary['objects']} ({summary['dynamic_objects']} dynamic, "
+        f"{summary['static_objects']} static), lights {summary['lights']}"
+    )
+    out_console.print(
+        f"bodies {model['bodies']}, geoms {model['geoms']}, joints {model['joints']} "
+        f"({model['free_joints']} free, {model['hinges']} hinges), meshes {model['meshes']}, "
+        f"mass {model['total_mass_kg']} kg"
+    )
+
+
+@app.command("schema")
+def schema_command(
+    kind: Annotated[str, typer.Argument(help="scene, asset or library.")] = "scene",
+    out: Annotated[Path | None, typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+) -> None:
+    """Print the JSON Schema of a holomj data format."""
+    from holomj.spec.schema import json_schema
+
+    text = json.dumps(_guard(lambda: json_schema(kind)), indent=2, sort_keys=True) + "\n"
+    if out is None:
+        sys.stdout.write(text)
+    else:
+        _guard(lambda: _write_text(out, text))
+
+
+def _write_text(path: Path, text: str) -> None:
+    try:
+        path.write_text(text, encoding="utf-8")
+    except OSError as err:
+        raise InputError(f"cannot write: {err.strerror or err}", where=str(path)) from None
+
+
+def main() -> None:
+    """Console-script entry point."""
+    app()

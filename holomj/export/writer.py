@@ -1,0 +1,115 @@
+"""Write a compiled scene as a self-contained folder, atomically.
+
+Layout of ``OUT/``::
+
+    scene.xml      MJCF with relative paths only (meshdir/texturedir = assets)
+    scene.json     the SceneSpec (texture paths rewritten to point into assets/)
+    assets/        every mesh and texture the model needs
+    *.json         extra reports handed in by the caller (e.g. import_report.json)
+
+Everything is written into a temporary folder beside OUT and renamed into place at the end, so
+a failure or a rejected input never leaves a half-written OUT behind.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import tempfile
+from pathlib import Path
+from typing import Any
+
+from holomj.errors import ExportError, OutputExistsError
+from holomj.mjcf import names
+from holomj.mjcf.compiler import CompiledScene
+from holomj.spec.scene import SceneSpec
+
+SCENE_XML = "scene.xml"
+SCENE_JSON = "scene.json"
+ASSETS_DIR = "assets"
+
+
+def prepare_output(out: Path, overwrite: bool) -> None:
+    """Check, before any work, that ``out`` may be written."""
+    if out.exists() and not overwrite:
+        raise OutputExistsError(
+            "output folder exists", where=str(out), fix="pass --overwrite to replace it"
+        )
+    if out.exists() and not out.is_dir():
+        raise OutputExistsError("output path exists and is not a folder", where=str(out))
+
+
+def scene_for_export(scene: SceneSpec) -> SceneSpec:
+    """The scene with material textures pointing at their copies under ``assets/``."""
+    materials = {
+        name: material.model_copy(
+            update={"texture": f"{ASSETS_DIR}/{names.texture_file(name)}"}
+        )
+        if material.texture
+        else material
+        for name, material in scene.materials.items()
+    }
+    return scene.model_copy(update={"materials": materials})
+
+
+def dump_json(data: Any) -> str:
+    """Deterministic, readable JSON text."""
+    return json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n"
+
+
+def export_scene(
+    compiled: CompiledScene,
+    out: Path,
+    *,
+    overwrite: bool = False,
+    extra_json: dict[str, Any] | None = None,
+) -> Path:
+    """Write ``compiled`` to ``out`` (see module docstring) and return ``out``."""
+    out = Path(out)
+    prepare_output(out, overwrite)
+    parent = out.resolve().parent
+    try:
+        parent.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=parent))
+    except OSError as err:
+        raise ExportError(f"cannot create the output folder: {err}", where=str(out)) from None
+    try:
+        _write_tree(compiled, tmp, extra_json or {})
+        _swap_into_place(tmp, out.resolve())
+    except BaseException as err:
+        shutil.rmtree(tmp, ignore_errors=True)
+        if isinstance(err, OSError):
+            raise ExportError(f"writing failed: {err}", where=str(out)) from None
+        raise
+    return out
+
+
+def _write_tree(compiled: CompiledScene, root: Path, extra_json: dict[str, Any]) -> None:
+    (root / SCENE_XML).write_text(compiled.to_xml(), encoding="utf-8")
+    scene = scene_for_export(compiled.scene)
+    (root / SCENE_JSON).write_text(
+        dump_json(scene.model_dump(mode="json", exclude_none=True)), encoding="utf-8"
+    )
+    for relative, data in compiled.files.items():
+        target = root / ASSETS_DIR / relative
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(data)
+    for name, data in sorted(extra_json.items()):
+        (root / name).write_text(dump_json(data), encoding="utf-8")
+
+
+def _swap_into_place(tmp: Path, out: Path) -> None:
+    """Rename ``tmp`` to ``out``; an existing ``out`` is moved aside first and removed after."""
+    if not out.exists():
+        os.replace(tmp, out)
+        return
+    backup = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.parent))
+    backup.rmdir()
+    os.replace(out, backup)
+    try:
+        os.replace(tmp, out)
+    except OSError:
+        os.replace(backup, out)
+        raise
+    shutil.rmtree(backup, ignore_errors=True)

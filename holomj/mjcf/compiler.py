@@ -1,0 +1,65 @@
+"""Compile a SceneSpec and an asset library into an in-memory MuJoCo model (no disk writes)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import mujoco
+
+from holomj.errors import CompileError
+from holomj.library.store import AssetLibrary
+from holomj.mjcf.context import BuildContext
+from holomj.mjcf.objects import ObjectBuilder
+from holomj.mjcf.openings import add_openings, place_openings
+from holomj.mjcf.structure import add_floors_and_ceilings, add_ground, add_walls
+from holomj.mjcf.views import add_cameras, add_lights
+from holomj.spec.scene import SceneSpec
+from mjcf_templates import template_path
+
+BASE_TEMPLATE = "base_scene.xml"
+
+
+@dataclass
+class CompiledScene:
+    """The result of compiling: the MjSpec, the model, and the files under ``assets/``."""
+
+    scene: SceneSpec
+    spec: mujoco.MjSpec
+    model: mujoco.MjModel
+    files: dict[str, bytes]
+
+    def to_xml(self) -> str:
+        """The scene as MJCF text, with paths relative to the exported folder."""
+        return self.spec.to_xml()
+
+
+def compile_scene(scene: SceneSpec, library: AssetLibrary) -> CompiledScene:
+    """Build the MjSpec for ``scene`` and compile it.
+
+    Raises :class:`~holomj.errors.AssetNotFoundError` for objects whose asset the library lacks,
+    :class:`~holomj.errors.SpecError` for geometry that cannot be built and
+    :class:`~holomj.errors.CompileError` when MuJoCo rejects the model.
+    """
+    spec = mujoco.MjSpec.from_file(str(template_path(BASE_TEMPLATE)))
+    spec.modelname = _model_name(scene.name)
+    ctx = BuildContext(spec=spec, scene=scene)
+    walls = scene.walls
+    openings = place_openings(ctx, walls)
+    add_ground(ctx)
+    add_floors_and_ceilings(ctx)
+    add_walls(ctx, walls, openings)
+    add_openings(ctx, openings)
+    ObjectBuilder(ctx, library).add_all()
+    add_lights(ctx)
+    add_cameras(ctx)
+    spec.assets = dict(ctx.files)
+    try:
+        model = spec.compile()
+    except ValueError as err:
+        raise CompileError(f"MuJoCo rejected the model: {' '.join(str(err).split())}") from None
+    return CompiledScene(scene=scene, spec=spec, model=model, files=dict(sorted(ctx.files.items())))
+
+
+def _model_name(name: str) -> str:
+    return re.sub(r"\s+", "_", name.strip()) or "scene"

@@ -1,0 +1,126 @@
+"""Every MJCF element name holomj generates is made here.
+
+Objects own the prefix ``f"{object_id}/"``; structure lives under ``structure/``, openings under
+their id, shared assets (meshes, materials, textures) under ``asset/<asset id>/`` and
+``material/<name>``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+
+_UNSAFE = re.compile(r"[^A-Za-z0-9_.\-]")
+
+
+def object_body(object_id: str) -> str:
+    """The body of a scene object."""
+    return f"{object_id}/body"
+
+
+def object_joint(object_id: str) -> str:
+    """The free joint of a dynamic object."""
+    return f"{object_id}/freejoint"
+
+
+def object_visual(object_id: str, index: int) -> str:
+    """The ``index``-th visual geom of an object."""
+    return f"{object_id}/visual_{index}"
+
+
+def object_collision(object_id: str, index: int) -> str:
+    """The ``index``-th collision geom of an object."""
+    return f"{object_id}/collision_{index}"
+
+
+def asset_prefix(asset_id: str, scale: tuple[float, float, float]) -> str:
+    """Prefix of mesh/material names of one asset at one scale."""
+    if all(abs(s - 1.0) < 1e-12 for s in scale):
+        return f"asset/{asset_id}"
+    return f"asset/{asset_id}@" + "x".join(f"{s:.6g}" for s in scale)
+
+
+def asset_folder(asset_id: str) -> str:
+    """A file-system-safe folder name for an asset's files under ``assets/``."""
+    safe = _UNSAFE.sub("_", asset_id)
+    if safe != asset_id:
+        safe = f"{safe}-{hashlib.sha1(asset_id.encode()).hexdigest()[:8]}"
+    return safe
+
+
+def scene_material(name: str) -> str:
+    """A scene (room, door, window) material."""
+    return f"material/{name}"
+
+
+def scene_texture(name: str) -> str:
+    """The texture of a scene material."""
+    return f"texture/{name}"
+
+
+def texture_file(name: str) -> str:
+    """Where a scene material's texture image goes, relative to ``assets/``."""
+    return f"textures/{asset_folder(name)}.png"
+
+
+def floor_mesh(room_id: str) -> str:
+    """The floor slab mesh of a room."""
+    return f"structure/floor/{room_id}"
+
+
+def floor_geom(room_id: str) -> str:
+    """The floor slab geom of a room."""
+    return f"structure/floor/{room_id}"
+
+
+def ceiling_geom(room_id: str) -> str:
+    """The ceiling slab geom of a room."""
+    return f"structure/ceiling/{room_id}"
+
+
+def ceiling_mesh(room_id: str) -> str:
+    """The ceiling slab mesh of a room."""
+    return f"structure/ceiling/{room_id}"
+
+
+def ground() -> str:
+    """The collision plane under all floors."""
+    return "structure/ground"
+
+
+def wall_piece(wall_id: str, index: int, side: str) -> str:
+    """One box of a wall split around its openings; ``side`` names the room it faces."""
+    return f"structure/{wall_id}/{index}/{side}"
+
+
+def opening_part(opening_id: str, part: str) -> str:
+    """A part (frame, glass, leaf, handle) of a door or window."""
+    return f"{opening_id}/{part}"
+
+
+def door_leaf_body(door_id: str, index: int) -> str:
+    """The hinged body of a door leaf."""
+    return f"{door_id}/leaf_{index}"
+
+
+def door_hinge(door_id: str, index: int) -> str:
+    """The hinge joint of a door leaf."""
+    return f"{door_id}/hinge_{index}"
+
+
+def light(light_id: str) -> str:
+    """A light."""
+    return f"light/{light_id}"
+
+
+def camera(camera_id: str) -> str:
+    """A user camera."""
+    return f"camera/{camera_id}"
+
+
+def room_camera(room_id: str) -> str:
+    """The automatic camera of a room."""
+    return f"camera/room/{room_id}"
+
+
+OVERVIEW_CAMERA = "camera/overview"

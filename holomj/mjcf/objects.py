@@ -1,0 +1,180 @@
+"""Scene objects: library assets as bodies with visual meshes and convex colliders.
+
+Mass: the object's ``mass_kg``, else the asset's mass (given, or density x collision volume)
+scaled by the volume factor ``sx * sy * sz``. It is spread over the colliders through a common
+density, so MuJoCo derives the inertia from the collision geometry; visual geoms have none.
+Non-uniform scale is exact for meshes and for primitives aligned with the asset axes; rotated
+round primitives get the scale their axes see, which is a close approximation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from holomj.errors import AssetNotFoundError
+from holomj.library.store import AssetLibrary, LibraryAsset
+from holomj.mjcf import names
+from holomj.mjcf.context import BuildContext
+from holomj.mjcf.geometry import clean, yaw_quat
+from holomj.spec.assets import CollisionPart
+from holomj.spec.scene import SceneObject
+
+_PRIMITIVES = {
+    "box": mujoco.mjtGeom.mjGEOM_BOX,
+    "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER,
+    "sphere": mujoco.mjtGeom.mjGEOM_SPHERE,
+    "capsule": mujoco.mjtGeom.mjGEOM_CAPSULE,
+}
+
+
+@dataclass(frozen=True)
+class _AssetHandles:
+    """MJCF names of one asset's meshes and materials at one scale."""
+
+    visual_meshes: list[str]
+    visual_materials: list[str]
+    collision_meshes: dict[int, str]
+
+
+class ObjectBuilder:
+    """Adds scene objects to an MjSpec, declaring each asset's meshes once per scale."""
+
+    def __init__(self, ctx: BuildContext, library: AssetLibrary) -> None:
+        self.ctx = ctx
+        self.library = library
+        self._handles: dict[tuple[str, tuple[float, float, float]], _AssetHandles] = {}
+        self._materials: dict[str, list[str]] = {}
+
+    def add_all(self) -> None:
+        """Add every object of the scene."""
+        for index, obj in enumerate(self.ctx.scene.objects):
+            try:
+                asset = self.library.get(obj.asset)
+            except AssetNotFoundError as err:
+                raise err.located(f"objects[{index}].asset ({obj.id})") from None
+            self.add(obj, asset)
+
+    def add(self, obj: SceneObject, asset: LibraryAsset) -> mujoco.MjsBody:
+        """Add one object as a body (with a free joint unless it is static)."""
+        meta = asset.meta
+        scale = obj.scale3
+        handles = self._asset_handles(asset, scale)
+        quat = obj.quat if obj.quat is not None else yaw_quat(math.radians(obj.yaw_deg))
+        body = self.ctx.spec.worldbody.add_body(
+            name=names.object_body(obj.id), pos=clean(obj.position), quat=clean(quat)
+        )
+        body.info = f"object {obj.id} (asset {meta.id})"
+        if not obj.static:
+            body.add_freejoint(name=names.object_joint(obj.id))
+        for k, (mesh, material) in enumerate(zip(handles.visual_meshes, handles.visual_materials)):
+            geom = body.add_geom(
+                name=names.object_visual(obj.id, k),
+                default=self.ctx.default("visual"),
+                type=mujoco.mjtGeom.mjGEOM_MESH,
+                meshname=mesh,
+                material=material,
+            )
+            geom.info = f"visual {k} of object {obj.id}"
+        volume_factor = scale[0] * scale[1] * scale[2]
+        mass = obj.mass_kg if obj.mass_kg is not None else meta.mass * volume_factor
+        density = mass / (meta.collision_volume_m3 * volume_factor)
+        default = "collision" if obj.static else "prop"
+        torsion, rolling = (0.005, 0.0001) if obj.static else (0.01, 0.001)
+        for k, part in enumerate(meta.collision):
+            geom = body.add_geom(
+                name=names.object_collision(obj.id, k),
+                default=self.ctx.default(default),
+                density=density,
+                friction=[meta.friction, torsion, rolling],
+                **_collider_fields(part, scale, handles.collision_meshes.get(k)),
+            )
+            geom.info = f"collider {k} of object {obj.id}"
+        return body
+
+    def _asset_handles(self, asset: LibraryAsset, scale: tuple[float, float, float]) -> _AssetHandles:
+        key = (asset.meta.id, scale)
+        if key in self._handles:
+            return self._handles[key]
+        meta = asset.meta
+        prefix = names.asset_prefix(meta.id, scale)
+        folder = names.asset_folder(meta.id)
+        visual_meshes = []
+        for k, part in enumerate(meta.visual):
+            mesh = self.ctx.spec.add_mesh(
+                name=f"{prefix}/visual_{k}",
+                file=self._register(asset, folder, part.mesh),
+                scale=list(scale),
+                inertia=mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL,
+            )
+            mesh.info = f"visual mesh {part.mesh} of asset {meta.id}"
+            visual_meshes.append(mesh.name)
+        collision_meshes = {}
+        for k, part in enumerate(meta.collision):
+            if part.kind != "mesh" or part.mesh is None:
+                continue
+            mesh = self.ctx.spec.add_mesh(
+                name=f"{prefix}/collision_{k}",
+                file=self._register(asset, folder, part.mesh),
+                scale=list(scale),
+                inertia=mujoco.mjtMeshInertia.mjMESH_INERTIA_CONVEX,
+                maxhullvert=meta.maxhullvert,
+            )
+            mesh.info = f"collision hull {part.mesh} of asset {meta.id}"
+            collision_meshes[k] = mesh.name
+        handles = _AssetHandles(visual_meshes, self._asset_materials(asset, folder), collision_meshes)
+        self._handles[key] = handles
+        return handles
+
+    def _asset_materials(self, asset: LibraryAsset, folder: str) -> list[str]:
+        meta = asset.meta
+        if meta.id in self._materials:
+            return self._materials[meta.id]
+        materials = []
+        for k, part in enumerate(meta.visual):
+            name = f"asset/{meta.id}/material_{k}"
+            material = self.ctx.spec.add_material(
+                name=name,
+                rgba=list(part.rgba),
+                specular=part.specular,
+                shininess=part.shininess,
+            )
+            if part.texture is not None:
+                texture = f"asset/{meta.id}/texture_{k}"
+                self.ctx.spec.add_texture(
+                    name=texture,
+                    type=mujoco.mjtTexture.mjTEXTURE_2D,
+                    file=self._register(asset, folder, part.texture),
+                )
+                material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = texture
+            materials.append(name)
+        self._materials[meta.id] = materials
+        return materials
+
+    def _register(self, asset: LibraryAsset, folder: str, relative: str) -> str:
+        return self.ctx.add_file(f"{folder}/{relative}", asset.path(relative).read_bytes())
+
+
+def _collider_fields(
+    part: CollisionPart, scale: tuple[float, float, float], mesh_name: str | None
+) -> dict[str, object]:
+    """MjsGeom fields (type, size, pos, quat, mesh) of a collider at a given scale."""
+    pos = clean(np.array(part.pos) * np.array(scale))
+    quat = clean(part.quat)
+    if part.kind == "mesh":
+        return {"type": mujoco.mjtGeom.mjGEOM_MESH, "meshname": mesh_name, "pos": pos, "quat": quat}
+    rot = np.zeros(9)
+    mujoco.mju_quat2Mat(rot, np.array(part.quat, dtype=float))
+    # Scale factors seen along the collider's own axes.
+    lsx, lsy, lsz = np.abs(rot.reshape(3, 3).T) @ np.array(scale)
+    size = list(part.size)
+    if part.kind == "box":
+        size = [size[0] * lsx, size[1] * lsy, size[2] * lsz]
+    elif part.kind in ("cylinder", "capsule"):
+        size = [size[0] * math.sqrt(lsx * lsy), size[1] * lsz]
+    else:
+        size = [size[0] * (lsx * lsy * lsz) ** (1 / 3)]
+    return {"type": _PRIMITIVES[part.kind], "size": clean(size + [0.0] * (3 - len(size))), "pos": pos, "quat": quat}

@@ -1,8 +1,9 @@
 """Scene objects: library assets as bodies with visual meshes and convex colliders.
 
 Mass: the object's ``mass_kg``, else the asset's mass (given, or density x collision volume)
-scaled by the volume factor ``sx * sy * sz``. It is spread over the colliders through a common
-density, so MuJoCo derives the inertia from the collision geometry; visual geoms have none.
+scaled by the volume factor ``sx * sy * sz``. It is shared out over the colliders in proportion to
+their recorded volumes and given to MuJoCo as each collider's ``mass``, so the body weighs exactly
+that while MuJoCo derives the inertia from the collision geometry; visual geoms have none.
 Non-uniform scale is exact for meshes and for primitives aligned with the asset axes; rotated
 round primitives get the scale their axes see, which is a close approximation.
 """
@@ -81,14 +82,14 @@ class ObjectBuilder:
             geom.info = f"visual {k} of object {obj.id}"
         volume_factor = scale[0] * scale[1] * scale[2]
         mass = obj.mass_kg if obj.mass_kg is not None else meta.mass * volume_factor
-        density = mass / (meta.collision_volume_m3 * volume_factor)
+        total_volume = meta.collision_volume_m3
         default = "collision" if obj.static else "prop"
         torsion, rolling = (0.005, 0.0001) if obj.static else (0.01, 0.001)
         for k, part in enumerate(meta.collision):
             geom = body.add_geom(
                 name=names.object_collision(obj.id, k),
                 default=self.ctx.default(default),
-                density=density,
+                mass=mass * part.volume_m3 / total_volume,
                 friction=[meta.friction, torsion, rolling],
                 **_collider_fields(part, scale, handles.collision_meshes.get(k)),
             )

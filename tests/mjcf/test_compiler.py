@@ -1,0 +1,186 @@
+"""The compiler: structure, openings, objects, determinism, golden XML, physics smoke runs."""
+
+from __future__ import annotations
+
+import difflib
+import math
+import os
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+
+from holomj.errors import AssetNotFoundError
+from holomj.library import AssetLibrary
+from holomj.mjcf import compile_scene
+from holomj.physics.smoke import simulate
+from holomj.spec.scene import SceneSpec
+from tests.conftest import TESTS, two_room_data
+
+GOLDEN = TESTS / "golden" / "two_room_scene.xml"
+
+
+def _geom(model: mujoco.MjModel, name: str):
+    return model.geom(name)
+
+
+def test_golden_xml(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    xml = compile_scene(two_room_scene, empty_library).to_xml()
+    if os.environ.get("HOLOMJ_UPDATE_GOLDEN") == "1":
+        GOLDEN.write_text(xml)
+    expected = GOLDEN.read_text()
+    if xml != expected:
+        diff = "".join(difflib.unified_diff(expected.splitlines(True), xml.splitlines(True), "golden", "actual", n=1))
+        pytest.fail(f"XML differs from {GOLDEN} (set HOLOMJ_UPDATE_GOLDEN=1 to accept):\n{diff[:4000]}")
+
+
+def test_same_input_gives_identical_xml(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    first = compile_scene(two_room_scene, empty_library).to_xml()
+    again = compile_scene(SceneSpec.model_validate(two_room_data()), empty_library).to_xml()
+    assert first == again
+
+
+def test_one_second_without_warnings(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    result = simulate(model, 1.0)
+    assert result.warnings == {}
+    assert result.steps == 500
+
+
+def test_class_conventions(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    for i in range(model.ngeom):
+        name = model.geom(i).name
+        if "/visual_" in name or "/frame_" in name or "/handle_" in name or "/floor/" in name:
+            assert model.geom_group[i] == 2, name
+            assert model.geom_contype[i] == 0 and model.geom_conaffinity[i] == 0, name
+        if "/collision_" in name:
+            assert model.geom_group[i] == 3, name
+    # Visual geoms add no mass: the crate's mass is exactly its collider's.
+    crate = model.body("crate/body")
+    assert crate.mass[0] == pytest.approx(0.6 * 0.4 * 0.5 * 200.0)
+
+
+def test_walls_have_real_holes(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    walls = [i for i in range(model.ngeom) if model.geom(i).name.startswith("structure/wall_")]
+
+    def blocked(point) -> bool:
+        for i in walls:
+            local = data.geom_xmat[i].reshape(3, 3).T @ (np.array(point) - data.geom_xpos[i])
+            if np.all(np.abs(local) <= model.geom_size[i] + 1e-9):
+                return True
+        return False
+
+    assert not blocked((2.0, 3.0, 1.0)), "kitchen door opening is blocked"
+    assert blocked((2.0, 3.0, 2.4)), "wall above the kitchen door is missing"
+    assert not blocked((0.0, 1.5, 1.5)), "kitchen window is blocked"
+    assert blocked((-0.1, 1.5, 0.5)), "wall below the kitchen window is missing"
+    assert not blocked((7.1, 2.0, 1.0)), "front door opening is blocked"
+    assert blocked((1.0, 3.0, 1.0)), "solid interior wall missing"
+    # The exterior corner is closed.
+    assert blocked((7.1, -0.1, 1.0))
+
+
+def test_door_hinge_swings_and_stops_at_its_limit(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    data = mujoco.MjData(model)
+    joint = model.joint("kitchen_door/hinge_0")
+    low, high = joint.range
+    assert math.isclose(high - low, math.pi / 2, rel_tol=1e-6)
+    direction = 1.0 if high > 0 else -1.0
+    dof = joint.dofadr[0]
+    for _ in range(1500):
+        data.qfrc_applied[dof] = direction * 30.0
+        mujoco.mj_step(model, data)
+    angle = data.qpos[joint.qposadr[0]]
+    assert abs(angle) > math.radians(80), "door did not swing open"
+    assert low - 0.05 <= angle <= high + 0.05, "door passed its limit"
+    # It swings into the kitchen (y < 3): the leaf's free end moved to the kitchen side.
+    mujoco.mj_forward(model, data)
+    panel = model.geom("kitchen_door/panel_0").id
+    assert data.geom_xpos[panel][1] < 2.9
+
+
+def test_double_door_has_two_leaves_opening_into_the_room(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    data = mujoco.MjData(model)
+    for index in (0, 1):
+        joint = model.joint(f"front_door/hinge_{index}")
+        low, high = joint.range
+        data.qpos[joint.qposadr[0]] = high if high > 0 else low
+    mujoco.mj_forward(model, data)
+    for index in (0, 1):
+        # Fully open leaves stand inside the living room (x < 7).
+        assert data.geom_xpos[model.geom(f"front_door/panel_{index}").id][0] < 6.7
+
+
+def test_static_and_dynamic_objects(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    assert model.body("crate/body").jntnum[0] == 1
+    assert model.body("table/body").jntnum[0] == 0
+    assert model.joint("crate/freejoint").type[0] == mujoco.mjtJoint.mjJNT_FREE
+
+
+def test_objects_rest_where_placed(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    start = {name: data.body(name).xpos.copy() for name in ("crate/body", "cube/body")}
+    for _ in range(1000):
+        mujoco.mj_step(model, data)
+    for name, pos in start.items():
+        assert np.linalg.norm(data.body(name).xpos - pos) < 0.005, name
+
+
+def test_cameras_and_lights(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    cams = {model.camera(i).name for i in range(model.ncam)}
+    assert {"camera/overview", "camera/room/kitchen", "camera/room/living", "camera/doorway_view"} <= cams
+    assert model.cam_projection[model.camera("camera/overview").id] == mujoco.mjtProjection.mjPROJ_ORTHOGRAPHIC
+    assert model.nlight == 2
+    assert model.light("light/sun").type[0] == mujoco.mjtLightType.mjLIGHT_DIRECTIONAL
+
+
+def test_default_lights_when_scene_has_none(empty_library: AssetLibrary) -> None:
+    data = two_room_data()
+    data["lights"] = []
+    model = compile_scene(SceneSpec.model_validate(data), empty_library).model
+    assert model.nlight == 3  # a sun and one light per room
+
+
+def test_ceilings_are_optional_and_hideable(empty_library: AssetLibrary) -> None:
+    data = two_room_data()
+    data["ceilings"] = True
+    model = compile_scene(SceneSpec.model_validate(data), empty_library).model
+    ceiling = model.geom("structure/ceiling/living")
+    assert ceiling.group[0] == 1 and ceiling.contype[0] == 0
+
+
+def test_non_rectangular_floor_is_triangulated(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+    model = compile_scene(two_room_scene, empty_library).model
+    mesh = model.mesh("structure/floor/living")
+    verts = model.mesh_vert[mesh.vertadr[0] : mesh.vertadr[0] + mesh.vertnum[0]]
+    # The L-shaped living room keeps its notch: no floor vertex inside the kitchen's square.
+    assert not any(0.01 < x < 3.99 and 0.01 < y < 2.99 for x, y, _ in verts)
+
+
+def test_missing_asset_names_the_object(empty_library: AssetLibrary) -> None:
+    data = two_room_data()
+    data["objects"][1]["asset"] = "builtin:boks"
+    with pytest.raises(AssetNotFoundError, match=r"objects\[1\]\.asset \(table\).*did you mean: builtin:box"):
+        compile_scene(SceneSpec.model_validate(data), empty_library)
+
+
+def test_texture_material(tmp_path: Path, empty_library: AssetLibrary, shared_assets: Path) -> None:
+    data = two_room_data()
+    texture = shared_assets / "textures" / "libero_seamless_wood_planks_floor.png"
+    data["materials"] = {"planks": {"texture": str(texture), "texture_size_m": 1.5}}
+    data["rooms"][1]["floor_material"] = "planks"
+    compiled = compile_scene(SceneSpec.model_validate(data), empty_library)
+    assert compiled.model.ntex == 1
+    assert compiled.files["textures/planks.png"] == texture.read_bytes()
+    assert simulate(compiled.model, 0.2).ok

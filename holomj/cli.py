@@ -24,7 +24,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
     add_completion=False,
 )
-out_console = Console()
+out_console = Console(soft_wrap=True)
 err_console = Console(stderr=True, highlight=False, soft_wrap=True)
 
 T = TypeVar("T")
@@ -46,12 +46,33 @@ def _emit_json(data: Any) -> None:
 
 @app.command("compile")
 def compile_command(
-    input_path: Annotated[Path, typer.Argument(metavar="INPUT", help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.")],
+    input_path: Annotated[
+        Path,
+        typer.Argument(
+            metavar="INPUT",
+            help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.",
+        ),
+    ],
     out: Annotated[Path, typer.Option("--out", "-o", help="Output folder to create.")],
-    fmt: Annotated[str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")] = None,
-    library: Annotated[Path | None, typer.Option("--library", help="Asset library folder (default: the built-in one).")] = None,
-    overwrite: Annotated[bool, typer.Option("--overwrite", help="Replace OUT if it exists.")] = False,
-    check_seconds: Annotated[float, typer.Option("--check-seconds", min=0.0, max=60.0, help="Seconds to simulate as a smoke test (0 skips).")] = 1.0,
+    fmt: Annotated[
+        str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
+    ] = None,
+    library: Annotated[
+        Path | None,
+        typer.Option("--library", help="Asset library folder (default: the built-in one)."),
+    ] = None,
+    overwrite: Annotated[
+        bool, typer.Option("--overwrite", help="Replace OUT if it exists.")
+    ] = False,
+    check_seconds: Annotated[
+        float,
+        typer.Option(
+            "--check-seconds",
+            min=0.0,
+            max=60.0,
+            help="Seconds to simulate as a smoke test (0 skips).",
+        ),
+    ] = 1.0,
     as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
 ) -> None:
@@ -59,10 +80,23 @@ def compile_command(
     from holomj.pipeline import compile_file
 
     if fmt is not None and fmt not in FORMATS:
-        _guard(lambda: _raise(InputError(f"unknown format {fmt!r}", where="--format", fix=f"use one of: {', '.join(FORMATS)}")))
+        _guard(
+            lambda: _raise(
+                InputError(
+                    f"unknown format {fmt!r}",
+                    where="--format",
+                    fix=f"use one of: {', '.join(FORMATS)}",
+                )
+            )
+        )
     report = _guard(
         lambda: compile_file(
-            input_path, out, library_path=library, fmt=fmt, overwrite=overwrite, check_seconds=check_seconds
+            input_path,
+            out,
+            library_path=library,
+            fmt=fmt,
+            overwrite=overwrite,
+            check_seconds=check_seconds,
         )
     )
     if as_json:
@@ -78,7 +112,9 @@ def compile_command(
             f"{model['bodies']} bodies, {model['geoms']} geoms, {model['total_mass_kg']} kg"
         )
         if report.substitutions:
-            out_console.print(f"  {len(report.substitutions)} assets substituted (see import_report.json)")
+            out_console.print(
+                f"  {len(report.substitutions)} assets substituted (see import_report.json)"
+            )
         for warning in report.warnings:
             out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
         if report.sim_warnings:
@@ -91,7 +127,9 @@ def _raise(err: HolomjError) -> None:
 
 @app.command("info")
 def info_command(
-    folder: Annotated[Path, typer.Argument(metavar="OUT", help="A folder written by 'holomj compile'.")],
+    folder: Annotated[
+        Path, typer.Argument(metavar="OUT", help="A folder written by 'holomj compile'.")
+    ],
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
     """Rooms, objects, bodies, geoms and mass of an exported scene."""
@@ -124,7 +162,9 @@ def info_command(
 @app.command("schema")
 def schema_command(
     kind: Annotated[str, typer.Argument(help="scene, asset or library.")] = "scene",
-    out: Annotated[Path | None, typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    out: Annotated[
+        Path | None, typer.Option("--out", "-o", help="Write to this file instead of stdout.")
+    ] = None,
 ) -> None:
     """Print the JSON Schema of a holomj data format."""
     from holomj.spec.schema import json_schema

@@ -35,7 +35,9 @@ def empty_library(tmp_path: Path) -> AssetLibrary:
     """A library with no assets of its own (it still offers builtin:box)."""
     root = tmp_path / "empty_library"
     root.mkdir()
-    (root / "library.json").write_text(json.dumps({"schema_version": "1.0", "name": "empty", "assets": {}}))
+    (root / "library.json").write_text(
+        json.dumps({"schema_version": "1.0", "name": "empty", "assets": {}})
+    )
     return AssetLibrary.open(root)
 
 

@@ -49,7 +49,9 @@ def folder_summary(out: Path) -> dict[str, Any]:
     """Summary of an exported folder: its scene.json and the model loaded from its scene.xml."""
     out = Path(out)
     if not out.is_dir():
-        raise FormatError("not a folder (expected a folder written by 'holomj compile')", where=str(out))
+        raise FormatError(
+            "not a folder (expected a folder written by 'holomj compile')", where=str(out)
+        )
     scene_path = out / SCENE_JSON
     scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
     xml_path = out / SCENE_XML
@@ -58,5 +60,7 @@ def folder_summary(out: Path) -> dict[str, Any]:
     try:
         model = mujoco.MjModel.from_xml_path(str(xml_path))
     except ValueError as err:
-        raise FormatError(f"MuJoCo cannot load it: {' '.join(str(err).split())}", where=str(xml_path)) from None
+        raise FormatError(
+            f"MuJoCo cannot load it: {' '.join(str(err).split())}", where=str(xml_path)
+        ) from None
     return {"folder": str(out), **scene_summary(scene), "model": model_summary(model)}

@@ -43,9 +43,7 @@ def prepare_output(out: Path, overwrite: bool) -> None:
 def scene_for_export(scene: SceneSpec) -> SceneSpec:
     """The scene with material textures pointing at their copies under ``assets/``."""
     materials = {
-        name: material.model_copy(
-            update={"texture": f"{ASSETS_DIR}/{names.texture_file(name)}"}
-        )
+        name: material.model_copy(update={"texture": f"{ASSETS_DIR}/{names.texture_file(name)}"})
         if material.texture
         else material
         for name, material in scene.materials.items()

@@ -3,7 +3,6 @@ scene, the safety net that turns stray Python errors into HolomjErrors, and open
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 from typing import Any, TypeVar
 
@@ -139,8 +138,3 @@ def clamp_noise(value: float, lo: float, hi: float, tol: float) -> float:
     if hi < value <= hi + tol:
         return hi
     return value
-
-
-def finite(*values: float) -> bool:
-    """True if every value is a finite float."""
-    return all(math.isfinite(v) for v in values)

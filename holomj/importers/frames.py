@@ -45,9 +45,7 @@ def yaw_from_unity(rotation_y: float) -> float:
 
 def is_tilted(rx: float, rz: float) -> bool:
     """True if a Unity rotation has a non-zero x or z component (modulo 360)."""
-    return (
-        abs(normalise_deg(rx)) > _TILT_TOL_DEG or abs(normalise_deg(rz)) > _TILT_TOL_DEG
-    )
+    return abs(normalise_deg(rx)) > _TILT_TOL_DEG or abs(normalise_deg(rz)) > _TILT_TOL_DEG
 
 
 def _rot_x(deg: float) -> Matrix:

@@ -67,8 +67,7 @@ def choose_asset(
     if size is None:
         size = FALLBACK_SIZE
         warning = (
-            f"object {object_id!r}: no size known for category {category!r}; "
-            "assuming a 0.5 m cube"
+            f"object {object_id!r}: no size known for category {category!r}; assuming a 0.5 m cube"
         )
     stand_in = library.closest(category, size) if category else None
     if stand_in is not None:

@@ -6,6 +6,8 @@ can always stand in a box of the right size (via ``scale``) for an asset it cann
 
 from __future__ import annotations
 
+import functools
+import json
 import math
 from dataclasses import dataclass
 from importlib import resources
@@ -63,7 +65,9 @@ class AssetLibrary:
         for asset_id, folder in sorted(index.assets.items()):
             asset_root = (root / folder).resolve()
             if root.resolve() not in asset_root.parents:
-                raise SpecError(f"asset folder {folder!r} leaves the library", where=str(index_path))
+                raise SpecError(
+                    f"asset folder {folder!r} leaves the library", where=str(index_path)
+                )
             assets[asset_id] = _load_asset(asset_root, asset_id)
         return cls(root, index.name, assets)
 
@@ -104,12 +108,23 @@ class AssetLibrary:
     def closest(self, category: str, size: tuple[float, float, float]) -> LibraryAsset | None:
         """The asset of ``category`` whose bounding box is closest in size (log-ratio distance).
 
-        A rotation by 90° about Z is allowed, so a 2 x 1 m bed matches a 1 x 2 m one.
+        When the library has no asset of that exact category, the category's aliases
+        (``holomj/data/category_aliases.json``, e.g. ``HousePlant`` -> ``potted_plant``) are tried
+        in order. A rotation by 90° about Z is allowed, so a 2 x 1 m bed matches a 1 x 2 m one.
         """
-        candidates = [a for a in self.by_category(category) if a.meta.id != BUILTIN_BOX]
-        if not candidates:
-            return None
-        return min(candidates, key=lambda a: (size_distance(a.meta.size, size), a.meta.id))
+        for name in [category, *category_aliases().get(normalise_category(category), [])]:
+            candidates = [a for a in self.by_category(name) if a.meta.id != BUILTIN_BOX]
+            if candidates:
+                return min(candidates, key=lambda a: (size_distance(a.meta.size, size), a.meta.id))
+        return None
+
+
+@functools.cache
+def category_aliases() -> dict[str, list[str]]:
+    """Normalised category name -> categories that may stand in for it, best first."""
+    text = _package_data("category_aliases.json").read_text(encoding="utf-8")
+    table = json.loads(text)
+    return {normalise_category(k): v for k, v in table.items() if not k.startswith("_")}
 
 
 def normalise_category(category: str) -> str:
@@ -130,7 +145,9 @@ def _load_asset(folder: Path, asset_id: str) -> LibraryAsset:
     meta_path = folder / "asset.json"
     meta = validate_model(AssetMeta, read_json(meta_path), str(meta_path))
     if meta.id != asset_id:
-        raise SpecError(f"asset id {meta.id!r} differs from the index entry {asset_id!r}", where=str(meta_path))
+        raise SpecError(
+            f"asset id {meta.id!r} differs from the index entry {asset_id!r}", where=str(meta_path)
+        )
     asset = LibraryAsset(meta=meta, root=folder)
     files = [p.mesh for p in meta.visual] + [p.texture for p in meta.visual if p.texture]
     files += [c.mesh for c in meta.collision if c.mesh]

@@ -32,7 +32,7 @@ def quat_from_axes(x_axis: np.ndarray, y_axis: np.ndarray, z_axis: np.ndarray) -
 
 
 def look_at_quat(position: Sequence[float], target: Sequence[float]) -> Quat:
-    """Orientation of a MuJoCo camera (looking along its -Z, +Y up) at ``position`` facing ``target``."""
+    """Orientation of a camera (looking down its -Z, +Y up) at ``position`` facing ``target``."""
     forward = np.asarray(target, dtype=float) - np.asarray(position, dtype=float)
     forward /= np.linalg.norm(forward)
     z_axis = -forward

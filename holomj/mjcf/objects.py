@@ -96,7 +96,9 @@ class ObjectBuilder:
             geom.info = f"collider {k} of object {obj.id}"
         return body
 
-    def _asset_handles(self, asset: LibraryAsset, scale: tuple[float, float, float]) -> _AssetHandles:
+    def _asset_handles(
+        self, asset: LibraryAsset, scale: tuple[float, float, float]
+    ) -> _AssetHandles:
         key = (asset.meta.id, scale)
         if key in self._handles:
             return self._handles[key]
@@ -126,7 +128,9 @@ class ObjectBuilder:
             )
             mesh.info = f"collision hull {part.mesh} of asset {meta.id}"
             collision_meshes[k] = mesh.name
-        handles = _AssetHandles(visual_meshes, self._asset_materials(asset, folder), collision_meshes)
+        handles = _AssetHandles(
+            visual_meshes, self._asset_materials(asset, folder), collision_meshes
+        )
         self._handles[key] = handles
         return handles
 
@@ -178,4 +182,9 @@ def _collider_fields(
         size = [size[0] * math.sqrt(lsx * lsy), size[1] * lsz]
     else:
         size = [size[0] * (lsx * lsy * lsz) ** (1 / 3)]
-    return {"type": _PRIMITIVES[part.kind], "size": clean(size + [0.0] * (3 - len(size))), "pos": pos, "quat": quat}
+    return {
+        "type": _PRIMITIVES[part.kind],
+        "size": clean(size + [0.0] * (3 - len(size))),
+        "pos": pos,
+        "quat": quat,
+    }

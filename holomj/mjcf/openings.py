@@ -60,7 +60,11 @@ def place_openings(ctx: BuildContext, walls: list[Wall]) -> dict[str, list[Place
             width, bottom = opening.effective_width, 0.0
             top = scene.wall_height if opening.kind == "open" else opening.height
         else:
-            width, bottom, top = opening.width, opening.base_height, opening.base_height + opening.height
+            width, bottom, top = (
+                opening.width,
+                opening.base_height,
+                opening.base_height + opening.height,
+            )
         wall, t = find_wall_for_opening(walls, opening.rooms, opening.position, width)
         if wall.exterior:
             thickness = scene.exterior_wall_thickness
@@ -69,7 +73,9 @@ def place_openings(ctx: BuildContext, walls: list[Wall]) -> dict[str, list[Place
         else:
             thickness, offset = scene.wall_thickness, 0.0
         placed.setdefault(wall.id, []).append(
-            PlacedOpening(opening, wall, t - width / 2, t + width / 2, bottom, top, thickness, offset)
+            PlacedOpening(
+                opening, wall, t - width / 2, t + width / 2, bottom, top, thickness, offset
+            )
         )
     return placed
 
@@ -148,13 +154,25 @@ def _add_window(ctx: BuildContext, item: PlacedOpening) -> None:
     window = item.opening
     assert isinstance(window, Window)
     _add_frame(ctx, item, ctx.scene_material("window_frame"))
-    inner = (item.t0 + FRAME_WIDTH, item.t1 - FRAME_WIDTH, item.bottom + FRAME_WIDTH, item.top - FRAME_WIDTH)
+    inner = (
+        item.t0 + FRAME_WIDTH,
+        item.t1 - FRAME_WIDTH,
+        item.bottom + FRAME_WIDTH,
+        item.top - FRAME_WIDTH,
+    )
     x, y = item.world(item.centre_t, 0.0)
     centre = (x, y, (inner[2] + inner[3]) / 2)
     half = ((inner[1] - inner[0]) / 2, GLASS_THICKNESS / 2, (inner[3] - inner[2]) / 2)
     glass = _box(
-        ctx, ctx.spec.worldbody, names.opening_part(window.id, "glass"), centre, item.wall.yaw,
-        half, ctx.scene_material("glass"), "structure", f"glass of {window.kind} window {window.id}",
+        ctx,
+        ctx.spec.worldbody,
+        names.opening_part(window.id, "glass"),
+        centre,
+        item.wall.yaw,
+        half,
+        ctx.scene_material("glass"),
+        "structure",
+        f"glass of {window.kind} window {window.id}",
     )
     glass.group = 2
     # Sliders get a vertical mullion, hung windows a horizontal meeting rail.
@@ -165,8 +183,14 @@ def _add_window(ctx: BuildContext, item: PlacedOpening) -> None:
         else:
             bar = (half[0], depth / 2, FRAME_WIDTH / 2)
         _box(
-            ctx, ctx.spec.worldbody, names.opening_part(window.id, "mullion"), centre,
-            item.wall.yaw, bar, ctx.scene_material("window_frame"), "visual",
+            ctx,
+            ctx.spec.worldbody,
+            names.opening_part(window.id, "mullion"),
+            centre,
+            item.wall.yaw,
+            bar,
+            ctx.scene_material("window_frame"),
+            "visual",
             f"mullion of {window.kind} window {window.id}",
         )
 

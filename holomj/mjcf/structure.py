@@ -125,7 +125,9 @@ def wall_spans(length: float, height: float, openings: list[PlacedOpening]) -> l
     return spans
 
 
-def add_walls(ctx: BuildContext, walls: list[Wall], openings: dict[str, list[PlacedOpening]]) -> None:
+def add_walls(
+    ctx: BuildContext, walls: list[Wall], openings: dict[str, list[PlacedOpening]]
+) -> None:
     """Boxes for every wall, split around doors and windows.
 
     An interior wall is two slabs of half the thickness, one per room, so each side wears its
@@ -135,7 +137,9 @@ def add_walls(ctx: BuildContext, walls: list[Wall], openings: dict[str, list[Pla
     scene = ctx.scene
     for wall in walls:
         spans = wall_spans(wall.length, scene.wall_height, openings.get(wall.id, []))
-        ext0, ext1 = _end_extensions(wall, walls, scene.wall_thickness, scene.exterior_wall_thickness)
+        ext0, ext1 = _end_extensions(
+            wall, walls, scene.wall_thickness, scene.exterior_wall_thickness
+        )
         if wall.exterior:
             thick = scene.exterior_wall_thickness
             sides = [(wall.rooms[0], _scale(wall.outward, thick / 2), thick)]

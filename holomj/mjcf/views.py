@@ -115,7 +115,11 @@ def room_camera_pose(
 
 
 def _projection(orthographic: bool) -> mujoco.mjtProjection:
-    return mujoco.mjtProjection.mjPROJ_ORTHOGRAPHIC if orthographic else mujoco.mjtProjection.mjPROJ_PERSPECTIVE
+    return (
+        mujoco.mjtProjection.mjPROJ_ORTHOGRAPHIC
+        if orthographic
+        else mujoco.mjtProjection.mjPROJ_PERSPECTIVE
+    )
 
 
 def _extent(ctx: BuildContext) -> tuple[tuple[float, float], tuple[float, float]]:

@@ -37,4 +37,6 @@ def simulate(model: mujoco.MjModel, seconds: float = 1.0) -> SmokeResult:
     mujoco.mj_forward(model, data)
     for _ in range(steps):
         mujoco.mj_step(model, data)
-    return SmokeResult(seconds=steps * model.opt.timestep, steps=steps, warnings=warning_counts(data))
+    return SmokeResult(
+        seconds=steps * model.opt.timestep, steps=steps, warnings=warning_counts(data)
+    )

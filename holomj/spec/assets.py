@@ -14,14 +14,26 @@ from __future__ import annotations
 import math
 from typing import Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import AfterValidator, Field, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat, Rgba, Vec2, Vec3, Vec4
 
 ASSET_SCHEMA_VERSION = "1.0"
 PLACEMENTS = ("floor", "wall", "object", "ceiling")
 
-RelPath = Annotated[str, Field(min_length=1, max_length=512, pattern=r"^[A-Za-z0-9_][A-Za-z0-9_./\-]*$")]
+
+def _inside_folder(path: str) -> str:
+    """Reject ``.``/``..`` and empty segments: files stay inside their asset folder."""
+    if any(part in ("", ".", "..") for part in path.split("/")):
+        raise ValueError(f"path {path!r} must stay inside the asset folder (no '.', '..' or '//')")
+    return path
+
+
+RelPath = Annotated[
+    str,
+    Field(min_length=1, max_length=512, pattern=r"^[A-Za-z0-9_][A-Za-z0-9_./\-]*$"),
+    AfterValidator(_inside_folder),
+]
 
 
 class VisualPart(FrozenModel):

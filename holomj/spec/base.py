@@ -62,7 +62,7 @@ def _is_union_tag(part: int | str) -> bool:
 
 
 def validate_model(model: type[ModelT], data: Any, source: str) -> ModelT:
-    """Validate ``data`` as ``model``; any failure becomes a :class:`SpecError` naming ``source``."""
+    """Validate ``data`` as ``model``; a failure becomes a :class:`SpecError` naming ``source``."""
     try:
         return model.model_validate(data)
     except ValidationError as err:

@@ -18,7 +18,6 @@ from holomj.spec.base import (
     Identifier,
     PositiveFloat,
     Rgb,
-    Rgba,
     Vec2,
     Vec3,
     Vec4,
@@ -287,9 +286,7 @@ def _check_openings(scene: SceneSpec) -> None:
         spans.setdefault(wall.id, []).append((t - width / 2, t + width / 2, where, bottom, top))
     for items in spans.values():
         items.sort()
-        for (a0, a1, a_where, a_bot, a_top), (b0, b1, b_where, b_bot, b_top) in zip(
-            items, items[1:]
-        ):
+        for (_, a1, a_where, a_bot, a_top), (b0, _, b_where, b_bot, b_top) in zip(items, items[1:]):
             if b0 < a1 - 1e-6 and a_bot < b_top and b_bot < a_top:
                 raise SpecError(f"overlaps {a_where} on the same wall", where=b_where)
 

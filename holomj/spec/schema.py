@@ -10,7 +10,11 @@ from holomj.errors import InputError
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.scene import SceneSpec
 
-SCHEMAS: dict[str, type[BaseModel]] = {"scene": SceneSpec, "asset": AssetMeta, "library": LibraryIndex}
+SCHEMAS: dict[str, type[BaseModel]] = {
+    "scene": SceneSpec,
+    "asset": AssetMeta,
+    "library": LibraryIndex,
+}
 
 
 def json_schema(kind: str = "scene") -> dict[str, Any]:
@@ -18,7 +22,9 @@ def json_schema(kind: str = "scene") -> dict[str, Any]:
     try:
         model = SCHEMAS[kind]
     except KeyError:
-        raise InputError(f"unknown schema {kind!r}", fix=f"use one of: {', '.join(SCHEMAS)}") from None
+        raise InputError(
+            f"unknown schema {kind!r}", fix=f"use one of: {', '.join(SCHEMAS)}"
+        ) from None
     schema = model.model_json_schema()
     version = model.model_fields["schema_version"].default
     schema["$comment"] = f"holomj {kind} format, schema_version {version}"

@@ -177,14 +177,14 @@ def _split_line(line: _Line) -> list[tuple[tuple[str, ...], Point, Point, str | 
     for t0, t1 in zip(cuts, cuts[1:]):
         cover = tuple(
             sorted(
-                (e.room, e.left)
-                for e in line.edges
-                if e.t0 <= t0 + _T_TOL and e.t1 >= t1 - _T_TOL
+                (e.room, e.left) for e in line.edges if e.t0 <= t0 + _T_TOL and e.t1 >= t1 - _T_TOL
             )
         )
         if not cover:
             continue
         sides = [left for _, left in cover]
+        if len(cover) == 2 and cover[0][0] == cover[1][0]:
+            raise SpecError(f"room {cover[0][0]} borders itself along an edge")
         if len(cover) > 2 or len(set(sides)) != len(sides):
             names = ", ".join(sorted({room for room, _ in cover}))
             raise SpecError(f"rooms {names} overlap along a shared edge")
@@ -223,7 +223,11 @@ def find_wall_for_opening(
         gap = math.hypot(t - clamped, off)
         if best is None or gap < best[0]:
             best = (gap, wall, t)
-        if abs(off) <= _ON_WALL_TOL and t - width / 2 >= -1e-6 and t + width / 2 <= wall.length + 1e-6:
+        if (
+            abs(off) <= _ON_WALL_TOL
+            and t - width / 2 >= -1e-6
+            and t + width / 2 <= wall.length + 1e-6
+        ):
             return wall, t
     assert best is not None
     gap, wall, t = best

@@ -1,4 +1,4 @@
-"""The exported folder: self-contained, reloadable from anywhere, identical to the in-memory model."""
+"""The exported folder: self-contained, loads from anywhere, equals the in-memory model."""
 
 from __future__ import annotations
 
@@ -31,8 +31,19 @@ def exported(tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibr
 def _same_model(a: mujoco.MjModel, b: mujoco.MjModel) -> None:
     for field in ("nbody", "ngeom", "njnt", "nmesh", "nmat", "ntex", "ncam", "nlight", "nq", "nv"):
         assert getattr(a, field) == getattr(b, field), field
-    for field in ("geom_size", "geom_pos", "geom_quat", "geom_group", "body_mass", "body_inertia", "jnt_range", "mesh_vert"):
-        np.testing.assert_allclose(getattr(a, field), getattr(b, field), rtol=1e-5, atol=1e-6, err_msg=field)
+    for field in (
+        "geom_size",
+        "geom_pos",
+        "geom_quat",
+        "geom_group",
+        "body_mass",
+        "body_inertia",
+        "jnt_range",
+        "mesh_vert",
+    ):
+        np.testing.assert_allclose(
+            getattr(a, field), getattr(b, field), rtol=1e-5, atol=1e-6, err_msg=field
+        )
     assert [a.geom(i).name for i in range(a.ngeom)] == [b.geom(i).name for i in range(b.ngeom)]
 
 
@@ -66,7 +77,11 @@ def test_loads_from_any_working_directory_and_after_copying(exported, tmp_path: 
         "mujoco.mj_step(m, d); print(m.ngeom)"
     )
     result = subprocess.run(
-        [sys.executable, "-c", code, str(moved / "scene.xml")], cwd="/", capture_output=True, text=True, check=False
+        [sys.executable, "-c", code, str(moved / "scene.xml")],
+        cwd="/",
+        capture_output=True,
+        text=True,
+        check=False,
     )
     assert result.returncode == 0, result.stderr
     assert int(result.stdout.strip()) > 10
@@ -84,7 +99,9 @@ def test_dm_control_loads_and_steps(exported) -> None:
     assert int(physics.data.warning.number.sum()) == 0
 
 
-def test_existing_output_needs_overwrite(exported, two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+def test_existing_output_needs_overwrite(
+    exported, two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
     compiled, out = exported
     marker = out / "marker.txt"
     marker.write_text("keep")
@@ -96,7 +113,9 @@ def test_existing_output_needs_overwrite(exported, two_room_scene: SceneSpec, em
     assert (out / "scene.xml").is_file()
 
 
-def test_failed_export_leaves_nothing(tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibrary, monkeypatch) -> None:
+def test_failed_export_leaves_nothing(
+    tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibrary, monkeypatch
+) -> None:
     compiled = compile_scene(two_room_scene, empty_library)
 
     def broken(*args, **kwargs):
@@ -110,13 +129,19 @@ def test_failed_export_leaves_nothing(tmp_path: Path, two_room_scene: SceneSpec,
     assert list(target.iterdir()) == []
 
 
-def test_extra_reports_are_written(tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+def test_extra_reports_are_written(
+    tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
     compiled = compile_scene(two_room_scene, empty_library)
-    out = export_scene(compiled, tmp_path / "out", extra_json={"import_report.json": {"substitutions": []}})
+    out = export_scene(
+        compiled, tmp_path / "out", extra_json={"import_report.json": {"substitutions": []}}
+    )
     assert json.loads((out / "import_report.json").read_text()) == {"substitutions": []}
 
 
-def test_textures_are_copied_and_scene_json_points_at_them(tmp_path: Path, shared_assets: Path, empty_library: AssetLibrary) -> None:
+def test_textures_are_copied_and_scene_json_points_at_them(
+    tmp_path: Path, shared_assets: Path, empty_library: AssetLibrary
+) -> None:
     from tests.conftest import two_room_data
 
     data = two_room_data()

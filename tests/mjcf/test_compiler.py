@@ -31,17 +31,27 @@ def test_golden_xml(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> N
         GOLDEN.write_text(xml)
     expected = GOLDEN.read_text()
     if xml != expected:
-        diff = "".join(difflib.unified_diff(expected.splitlines(True), xml.splitlines(True), "golden", "actual", n=1))
-        pytest.fail(f"XML differs from {GOLDEN} (set HOLOMJ_UPDATE_GOLDEN=1 to accept):\n{diff[:4000]}")
+        diff = "".join(
+            difflib.unified_diff(
+                expected.splitlines(True), xml.splitlines(True), "golden", "actual", n=1
+            )
+        )
+        pytest.fail(
+            f"XML differs from {GOLDEN} (set HOLOMJ_UPDATE_GOLDEN=1 to accept):\n{diff[:4000]}"
+        )
 
 
-def test_same_input_gives_identical_xml(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+def test_same_input_gives_identical_xml(
+    two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
     first = compile_scene(two_room_scene, empty_library).to_xml()
     again = compile_scene(SceneSpec.model_validate(two_room_data()), empty_library).to_xml()
     assert first == again
 
 
-def test_one_second_without_warnings(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+def test_one_second_without_warnings(
+    two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
     model = compile_scene(two_room_scene, empty_library).model
     result = simulate(model, 1.0)
     assert result.warnings == {}
@@ -85,7 +95,9 @@ def test_walls_have_real_holes(two_room_scene: SceneSpec, empty_library: AssetLi
     assert blocked((7.1, -0.1, 1.0))
 
 
-def test_door_hinge_swings_and_stops_at_its_limit(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+def test_door_hinge_swings_and_stops_at_its_limit(
+    two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
     model = compile_scene(two_room_scene, empty_library).model
     data = mujoco.MjData(model)
     joint = model.joint("kitchen_door/hinge_0")
@@ -105,7 +117,9 @@ def test_door_hinge_swings_and_stops_at_its_limit(two_room_scene: SceneSpec, emp
     assert data.geom_xpos[panel][1] < 2.9
 
 
-def test_double_door_has_two_leaves_opening_into_the_room(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+def test_double_door_has_two_leaves_opening_into_the_room(
+    two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
     model = compile_scene(two_room_scene, empty_library).model
     data = mujoco.MjData(model)
     for index in (0, 1):
@@ -139,8 +153,16 @@ def test_objects_rest_where_placed(two_room_scene: SceneSpec, empty_library: Ass
 def test_cameras_and_lights(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
     model = compile_scene(two_room_scene, empty_library).model
     cams = {model.camera(i).name for i in range(model.ncam)}
-    assert {"camera/overview", "camera/room/kitchen", "camera/room/living", "camera/doorway_view"} <= cams
-    assert model.cam_projection[model.camera("camera/overview").id] == mujoco.mjtProjection.mjPROJ_ORTHOGRAPHIC
+    assert {
+        "camera/overview",
+        "camera/room/kitchen",
+        "camera/room/living",
+        "camera/doorway_view",
+    } <= cams
+    assert (
+        model.cam_projection[model.camera("camera/overview").id]
+        == mujoco.mjtProjection.mjPROJ_ORTHOGRAPHIC
+    )
     assert model.nlight == 2
     assert model.light("light/sun").type[0] == mujoco.mjtLightType.mjLIGHT_DIRECTIONAL
 
@@ -160,7 +182,9 @@ def test_ceilings_are_optional_and_hideable(empty_library: AssetLibrary) -> None
     assert ceiling.group[0] == 1 and ceiling.contype[0] == 0
 
 
-def test_non_rectangular_floor_is_triangulated(two_room_scene: SceneSpec, empty_library: AssetLibrary) -> None:
+def test_non_rectangular_floor_is_triangulated(
+    two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
     model = compile_scene(two_room_scene, empty_library).model
     mesh = model.mesh("structure/floor/living")
     verts = model.mesh_vert[mesh.vertadr[0] : mesh.vertadr[0] + mesh.vertnum[0]]
@@ -171,7 +195,9 @@ def test_non_rectangular_floor_is_triangulated(two_room_scene: SceneSpec, empty_
 def test_missing_asset_names_the_object(empty_library: AssetLibrary) -> None:
     data = two_room_data()
     data["objects"][1]["asset"] = "builtin:boks"
-    with pytest.raises(AssetNotFoundError, match=r"objects\[1\]\.asset \(table\).*did you mean: builtin:box"):
+    with pytest.raises(
+        AssetNotFoundError, match=r"objects\[1\]\.asset \(table\).*did you mean: builtin:box"
+    ):
         compile_scene(SceneSpec.model_validate(data), empty_library)
 
 

@@ -72,9 +72,16 @@ def test_mesh_assets_compile_rest_and_weigh_what_they_should(mesh_library: Asset
     model = compiled.model
     assert model.body("mug_1/body").mass[0] == pytest.approx(0.3, rel=0.02)
     assert model.body("mug_2/body").mass[0] == pytest.approx(0.3 * 1.5**3, rel=0.02)
-    assert model.mesh("asset/mug/collision_0").id != model.mesh("asset/mug@1.5x1.5x1.5/collision_0").id
+    assert (
+        model.mesh("asset/mug/collision_0").id != model.mesh("asset/mug@1.5x1.5x1.5/collision_0").id
+    )
     # Each unique file is written once, under a folder named after the asset.
-    assert sorted(compiled.files) == ["bowl/hull.obj", "bowl/visual.obj", "mug/hull.obj", "mug/visual.obj"]
+    assert sorted(compiled.files) == [
+        "bowl/hull.obj",
+        "bowl/visual.obj",
+        "mug/hull.obj",
+        "mug/visual.obj",
+    ]
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     start = data.body("mug_1/body").xpos.copy()

@@ -58,7 +58,10 @@ def test_json_nan_literal_is_rejected() -> None:
 
 def test_self_intersecting_room() -> None:
     bow_tie = [[0, 0], [4, 4], [4, 0], [0, 4]]
-    _invalid(lambda d: d["rooms"][0].update(polygon=bow_tie), r"rooms\[0\]\.polygon: polygon intersects itself")
+    _invalid(
+        lambda d: d["rooms"][0].update(polygon=bow_tie),
+        r"rooms\[0\]\.polygon: polygon intersects itself",
+    )
 
 
 def test_overlapping_rooms() -> None:
@@ -69,14 +72,17 @@ def test_overlapping_rooms() -> None:
 
 
 def test_duplicate_ids() -> None:
-    _invalid(lambda d: d["objects"][1].update(id="crate"), r"objects\[1\]\.id: duplicate id 'crate'")
+    _invalid(
+        lambda d: d["objects"][1].update(id="crate"), r"objects\[1\]\.id: duplicate id 'crate'"
+    )
     _invalid(lambda d: d["windows"][0].update(id="front_door"), r"duplicate id 'front_door'")
 
 
 def test_door_off_its_wall() -> None:
     _invalid(
         lambda d: d["doors"][0].update(position=[2, 2]),
-        r"doors\[0\]: centre \(2.00, 2.00\) is not on the wall between rooms 'kitchen' and 'living'",
+        r"doors\[0\]: centre \(2.00, 2.00\) is not on the wall between rooms "
+        r"'kitchen' and 'living'",
     )
 
 
@@ -85,12 +91,16 @@ def test_window_too_wide_for_its_wall() -> None:
 
 
 def test_window_on_missing_exterior_wall() -> None:
-    _invalid(lambda d: d["windows"][0].update(rooms=["kitchen", "nowhere"]), r"unknown room 'nowhere'")
+    _invalid(
+        lambda d: d["windows"][0].update(rooms=["kitchen", "nowhere"]), r"unknown room 'nowhere'"
+    )
 
 
 def test_overlapping_openings() -> None:
     _invalid(
-        lambda d: d["windows"].append({"id": "w3", "rooms": ["living"], "position": [3.5, 5], "width": 1.0}),
+        lambda d: d["windows"].append(
+            {"id": "w3", "rooms": ["living"], "position": [3.5, 5], "width": 1.0}
+        ),
         r"windows\[2\]: overlaps windows\[1\]",
     )
 
@@ -100,11 +110,17 @@ def test_opening_higher_than_wall() -> None:
 
 
 def test_support_must_exist() -> None:
-    _invalid(lambda d: d["objects"][2].update(support="ghost"), r"objects\[2\]\.support: unknown support object")
+    _invalid(
+        lambda d: d["objects"][2].update(support="ghost"),
+        r"objects\[2\]\.support: unknown support object",
+    )
 
 
 def test_unknown_material() -> None:
-    _invalid(lambda d: d["rooms"][0].update(floor_material="lava"), r"rooms\[0\]\.floor_material: unknown material 'lava'")
+    _invalid(
+        lambda d: d["rooms"][0].update(floor_material="lava"),
+        r"rooms\[0\]\.floor_material: unknown material 'lava'",
+    )
 
 
 def test_scene_material_can_be_defined() -> None:
@@ -136,7 +152,9 @@ def test_json_schema_export_lists_all_top_level_fields() -> None:
     from holomj.spec.schema import json_schema
 
     schema = json_schema("scene")
-    assert {"rooms", "doors", "windows", "objects", "lights", "cameras", "materials"} <= set(schema["properties"])
+    assert {"rooms", "doors", "windows", "objects", "lights", "cameras", "materials"} <= set(
+        schema["properties"]
+    )
     assert schema["additionalProperties"] is False
     json.dumps(schema)
 

@@ -51,7 +51,11 @@ def test_three_rooms_in_a_row_with_unequal_edges() -> None:
     c = [(3, 2), (6, 2), (6, 4), (3, 4)]
     walls = derive_walls(_rooms(a, b, c))
     shared = {w.rooms: w.length for w in walls if not w.exterior}
-    assert shared == {("r0", "r1"): pytest.approx(2.0), ("r0", "r2"): pytest.approx(2.0), ("r1", "r2"): pytest.approx(3.0)}
+    assert shared == {
+        ("r0", "r1"): pytest.approx(2.0),
+        ("r0", "r2"): pytest.approx(2.0),
+        ("r1", "r2"): pytest.approx(3.0),
+    }
 
 
 def test_clockwise_input_gives_the_same_walls() -> None:

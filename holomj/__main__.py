@@ -1,0 +1,5 @@
+"""``python -m holomj`` runs the command line."""
+
+from holomj.cli import main
+
+main()

@@ -1,0 +1,107 @@
+"""Recognising an input file's format and loading it as a holomj scene.
+
+* holomj ``scene.json``: ``schema_version`` and ``rooms`` whose entries have ``polygon``.
+* ProcTHOR / Holodeck house: ``rooms`` whose entries have ``floorPolygon``.
+* 3D-Generalist SceneDef: a ``scenedef`` marker, a single ``room``, rooms with ``floor`` or
+  ``bbox``, or objects with ``placements``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Literal
+
+from holomj.errors import FormatError, InputError, SpecError
+from holomj.importers.common import check_assets
+from holomj.importers.procthor import import_procthor
+from holomj.importers.result import ImportResult
+from holomj.importers.scenedef import import_scenedef
+from holomj.library.store import AssetLibrary
+from holomj.spec.base import read_json, validate_model
+from holomj.spec.scene import SceneSpec
+
+Format = Literal["holomj", "procthor", "scenedef"]
+FORMATS = ("holomj", "procthor", "holodeck", "scenedef")
+
+
+def _first_items(value: Any) -> list[dict[str, Any]]:
+    if isinstance(value, list):
+        return [item for item in value if isinstance(item, dict)]
+    return []
+
+
+def detect_format(data: Any, source: str = "input") -> Format:
+    """The format of a parsed JSON document, or a FormatError saying what we looked for."""
+    if not isinstance(data, dict):
+        raise FormatError(
+            "expected a JSON object at the top level", where=source, fix=_formats_hint()
+        )
+    rooms = _first_items(data.get("rooms"))
+    if "schema_version" in data and any("polygon" in r for r in rooms):
+        return "holomj"
+    if any("floorPolygon" in r for r in rooms):
+        return "procthor"
+    objects = _first_items(data.get("objects"))
+    if (
+        "scenedef" in data
+        or isinstance(data.get("room"), dict)
+        or any("floor" in r or "bbox" in r for r in rooms)
+        or any("placements" in o for o in objects)
+    ):
+        return "scenedef"
+    if "schema_version" in data and rooms:
+        return "holomj"
+    raise FormatError("not a format holomj knows", where=source, fix=_formats_hint())
+
+
+def _formats_hint() -> str:
+    return (
+        "expected a holomj scene.json (schema_version + rooms[].polygon), a ProcTHOR/Holodeck "
+        "house (rooms[].floorPolygon) or a 3D-Generalist SceneDef (objects[].placements); "
+        "or force one with --format holomj|procthor|holodeck|scenedef"
+    )
+
+
+def load_scene_input(path: Path, library: AssetLibrary, fmt: str | None = None) -> ImportResult:
+    """Read ``path`` and return the scene it describes, importing foreign formats.
+
+    ``fmt`` forces a format: ``holomj``, ``procthor``, ``holodeck`` (the same importer as
+    ``procthor``) or ``scenedef``; None detects it. Every object's asset must be in
+    ``library``.
+    """
+    if fmt is not None and fmt not in FORMATS:
+        raise InputError(
+            f"unknown format {fmt!r}", where="--format", fix=f"use one of: {', '.join(FORMATS)}"
+        )
+    path = Path(path)
+    source = str(path)
+    data = read_json(path)
+    chosen = fmt if fmt is not None else detect_format(data, source)
+    if chosen in ("procthor", "holodeck"):
+        return import_procthor(data, library, source)
+    if chosen == "scenedef":
+        return import_scenedef(data, library, source)
+    return _load_holomj(data, path, library)
+
+
+def _load_holomj(data: Any, path: Path, library: AssetLibrary) -> ImportResult:
+    source = str(path)
+    scene = validate_model(SceneSpec, data, source)
+    materials = {}
+    changed = False
+    for name, material in scene.materials.items():
+        if material.texture and not Path(material.texture).is_absolute():
+            texture = (path.parent / material.texture).resolve()
+            if not texture.is_file():
+                raise SpecError(
+                    f"texture file {material.texture!r} not found",
+                    where=f"{source}: materials.{name}.texture",
+                    fix="texture paths are relative to the scene file's folder",
+                )
+            material = material.model_copy(update={"texture": str(texture)})
+            changed = True
+        materials[name] = material
+    if changed:
+        scene = scene.model_copy(update={"materials": materials})
+    check_assets(scene, library, source)
+    return ImportResult(scene=scene, format="holomj")

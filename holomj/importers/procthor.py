@@ -1,0 +1,685 @@
+"""ProcTHOR and Holodeck house JSON -> holomj SceneSpec.
+
+Supported inputs
+----------------
+* ProcTHOR schema ``1.0.0`` (``metadata.schema == "1.0.0"``): materials are objects
+  ``{"name": ..., "color": {"r", "g", "b"}}``; openings carry ``holePolygon``.
+* Older ProcTHOR houses: materials are plain strings, openings may carry ``boundingBox``
+  (``{"min": {x, y, z}, "max": {x, y, z}}``) instead of ``holePolygon``.
+* Holodeck houses: the 1.0.0 structure plus ``wall_height``, room ids such as ``"living room"``,
+  objects with ``object_name``, ``roomId`` and a ``vertices`` footprint in centimetres, small
+  objects whose id is ``"<name>|<receptacle id>"``, and ``open_walls.segments`` for open
+  connections between rooms.
+
+Fields read: ``rooms[].{id, roomType, floorPolygon, floorMaterial, wallMaterial}``,
+``walls[].{id, roomId, polygon, material, empty}``, ``doors[]``/``windows[]``
+``.{id, assetId, room0, room1, wall0, wall1, holePolygon | boundingBox, openable}``,
+``objects[].{id, assetId, position, rotation, kinematic, children, object_name, roomId,
+vertices}``, ``proceduralParameters.{lights, ceilingMaterial, ceilingColor}``, ``wall_height``,
+``open_walls``. Everything else (agent, skybox, metadata...) is ignored.
+
+Conventions (see :mod:`holomj.importers.frames`)
+-----------------------------------------------
+* holomj ``(X, Y, Z) = (unity x, unity z, unity y)``; ``yaw_deg = 90 - rotation.y``; a non-zero
+  ``rotation.x``/``rotation.z`` gives a full ``quat`` instead.
+* An object's ProcTHOR ``position`` is the centre of its bounding box; holomj wants the centre of
+  the footprint at the bottom, so ``z = unity y - height / 2`` with the height of the asset used.
+  When the asset was substituted, an object that stood on the floor (or on its parent's top) in
+  the source is put on the floor (or on the stand-in parent's top).
+* Walls: holomj derives walls from the room polygons, so ProcTHOR walls only serve to locate
+  openings (``holePolygon`` x runs along ``wall0`` from its polygon's first vertex, y is up),
+  to give each room its wall material (the most common one of its walls) and the wall height
+  (their highest point, or Holodeck's ``wall_height``). Imported scenes use thin walls,
+  ``wall_thickness = exterior_wall_thickness = 0.05`` m, like ProcTHOR's.
+* Door kinds: an assetId with ``Doorframe`` -> ``doorframe`` (a frame, no leaf); ``Doorway`` ->
+  ``doorway`` (a frame with a leaf); no assetId, or one containing ``open`` -> ``open``; any
+  other asset -> ``doorway``. ``Double`` in the assetId or a hole wider than 1.5 m -> two
+  leaves. Walls marked ``empty`` (ProcTHOR) and Holodeck ``open_walls`` become ``open``
+  doors as wide as the shared wall allows (at most 4 m).
+* Windows: ``Window_Fixed`` / ``Window_Hung`` / ``Window_Slider`` -> ``fixed`` / ``hung`` /
+  ``slider`` (``fixed`` when the asset says nothing).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections import Counter
+from dataclasses import dataclass
+from pathlib import PurePath
+from typing import Any
+
+from shapely.geometry import Point, Polygon
+
+from holomj.errors import SpecError
+from holomj.importers.common import (
+    build_model,
+    clamp_noise,
+    finish_scene,
+    guarded,
+    snap_opening,
+)
+from holomj.importers.frames import (
+    is_tilted,
+    quat_from_unity,
+    unity_forward,
+    unity_point,
+    yaw_from_unity,
+)
+from holomj.importers.ids import IdMap, sanitise
+from holomj.importers.jsonpath import Node
+from holomj.importers.materials import MaterialResolver
+from holomj.importers.result import ImportResult, Substitution
+from holomj.importers.substitute import category_size, choose_asset
+from holomj.library.store import AssetLibrary
+from holomj.spec.scene import Door, Light, Room, SceneObject, Window
+from holomj.spec.walls import Wall, derive_walls, room_polygon
+
+IMPORT_WALL_THICKNESS = 0.05
+DEFAULT_WALL_HEIGHT = 2.7
+_DOUBLE_DOOR_WIDTH = 1.5
+_REST_TOL = 0.05  # metres: a bottom this close to a surface rests on it
+_TOP_CLEARANCE = 0.06  # openings must stay this far below the wall top
+_MAX_NOISE = 0.2  # metres of overflow we clamp (with a warning) rather than reject
+_INSTANCE_SUFFIX = re.compile(r"-\d+$")  # Holodeck instance numbers: "sofa-0"
+
+
+@dataclass(frozen=True)
+class _WallInfo:
+    start: tuple[float, float]
+    end: tuple[float, float]
+    top: float
+    room: str | None
+    material: tuple[str | None, tuple[float, ...] | None]
+    empty: bool
+    exterior: bool
+
+
+@dataclass
+class _Placed:
+    """What children need to know about their parent."""
+
+    id: str
+    room: str | None
+    src_top: float  # top in the source (metres, world z)
+    used_top: float  # top of the asset used
+
+
+def import_procthor(data: Any, library: AssetLibrary, source: str) -> ImportResult:
+    """Import a ProcTHOR (1.0.0 or older) or Holodeck house dictionary.
+
+    ``source`` names the file in error messages and becomes ``SceneSpec.source``. Errors are
+    :class:`~holomj.errors.FormatError` (shape of the JSON) or :class:`SpecError` (geometry),
+    each naming the source and the JSON path.
+    """
+    return guarded(source, lambda: _ProcthorImport(data, library, source).run())
+
+
+class _ProcthorImport:
+    def __init__(self, data: Any, library: AssetLibrary, source: str) -> None:
+        self.root = Node(data, source).dict()
+        self.library = library
+        self.source = source
+        self.materials = MaterialResolver()
+        self.warnings: list[str] = []
+        self.substitutions: list[Substitution] = []
+        self.room_ids = IdMap("room")
+        self.opening_ids = IdMap("opening")
+        self.object_ids = IdMap("object")
+        self.light_ids = IdMap("light")
+        self.rooms: list[Room] = []
+        self.room_shapes: list[tuple[str, Polygon]] = []
+        self.walls: dict[str, _WallInfo] = {}
+        self.derived: list[Wall] = []
+        self.spans: dict[str, list[tuple[float, float]]] = {}
+        self.objects: list[SceneObject] = []
+        self.wall_height = DEFAULT_WALL_HEIGHT
+        self.holodeck = False
+
+    # -- driver ----------------------------------------------------------------------------
+    def run(self) -> ImportResult:
+        room_nodes = self.root.get("rooms").items()
+        if not room_nodes:
+            raise self.root.get("rooms").error("a house needs at least one room")
+        self.holodeck = self._looks_like_holodeck(room_nodes)
+        self._read_walls()
+        self.wall_height = self._wall_height()
+        self._read_rooms(room_nodes)
+        try:
+            self.derived = derive_walls(self.rooms)
+        except SpecError as err:
+            raise err.located(f"{self.source}: rooms") from None
+        doors = self._read_openings("doors")
+        windows = self._read_openings("windows")
+        doors += self._open_walls()
+        self._read_objects()
+        lights = self._read_lights()
+        fields = {
+            "name": sanitise(PurePath(self.source).stem, "scene")[:128],
+            "wall_height": self.wall_height,
+            "wall_thickness": IMPORT_WALL_THICKNESS,
+            "exterior_wall_thickness": IMPORT_WALL_THICKNESS,
+            "rooms": self.rooms,
+            "doors": doors,
+            "windows": windows,
+            "objects": self.objects,
+            "lights": lights,
+            "materials": self.materials.scene_materials,
+            "source": self.source,
+        }
+        scene = finish_scene(fields, self.library, self.source)
+        return ImportResult(
+            scene=scene,
+            format="holodeck" if self.holodeck else "procthor",
+            substitutions=self.substitutions,
+            warnings=self.materials.warnings + self.warnings,
+        )
+
+    def _looks_like_holodeck(self, room_nodes: list[Node]) -> bool:
+        if self.root.has("wall_height") or self.root.has("open_walls"):
+            return True
+        objects = self.root.opt("objects")
+        if (
+            objects is not None
+            and isinstance(objects.value, list)
+            and any(isinstance(o, dict) and "object_name" in o for o in objects.value)
+        ):
+            return True
+        return any(isinstance(r.value, dict) and "full_vertices" in r.value for r in room_nodes)
+
+    # -- walls and wall height -------------------------------------------------------------
+    def _read_walls(self) -> None:
+        walls = self.root.opt("walls")
+        if walls is None:
+            return
+        for node in walls.items():
+            node.dict()
+            wall_id = node.str_("id")
+            points = node.get("polygon").items()
+            if len(points) < 2:
+                raise node.get("polygon").error("a wall polygon needs at least two points")
+            coords = [p.dict().xyz() for p in points]
+            start = (coords[0][0], coords[0][2])
+            end = max(((c[0], c[2]) for c in coords), key=lambda q: math.dist(q, start))
+            room = node.str_("roomId", None)
+            self.walls[wall_id] = _WallInfo(
+                start=start,
+                end=end,
+                top=max(c[1] for c in coords),
+                room=room,
+                material=_material_spec(node.opt("material")),
+                empty=node.bool_("empty", False),
+                exterior="exterior" in wall_id.split("|"),
+            )
+
+    def _wall_height(self) -> float:
+        given = self.root.opt("wall_height")
+        if given is not None:
+            return given.number()
+        tops = [w.top for w in self.walls.values()]
+        return max(tops) if tops else DEFAULT_WALL_HEIGHT
+
+    # -- rooms -----------------------------------------------------------------------------
+    def _read_rooms(self, room_nodes: list[Node]) -> None:
+        ceiling = self._ceiling_material()
+        for index, node in enumerate(room_nodes):
+            path = f"rooms[{index}]"
+            node.dict()
+            raw_id = node.str_("id")
+            room_id = self.room_ids.new(raw_id)
+            poly_node = node.get("floorPolygon")
+            points = []
+            for p in poly_node.items():
+                p.dict()
+                points.append((p.num("x", limit=1e4), p.num("z", limit=1e4)))
+            if len(points) < 3:
+                raise poly_node.error("a floor polygon needs at least three points")
+            try:
+                shape = room_polygon(points)
+            except SpecError as err:
+                raise err.located(poly_node.where()) from None
+            floor_name, floor_rgb = _material_spec(node.opt("floorMaterial"))
+            floor = self.materials.resolve(
+                floor_name, floor_rgb, "floor_default", f"{path}.floorMaterial"
+            )
+            wall = self._room_wall_material(raw_id, node, path)
+            fields = {
+                "id": room_id,
+                "type": node.str_("roomType", "room")[:64],
+                "polygon": points,
+                "floor_material": floor,
+                "wall_material": wall,
+                "ceiling_material": ceiling,
+            }
+            self.rooms.append(build_model(Room, fields, self.source, path))
+            self.room_shapes.append((room_id, shape))
+
+    def _room_wall_material(self, raw_id: str, node: Node, path: str) -> str:
+        specs = [
+            w.material
+            for w in self.walls.values()
+            if w.room == raw_id and not w.exterior and (w.material[0] or w.material[1])
+        ]
+        if specs:
+            counts = Counter(specs)
+            best = max(counts.values())
+            name, rgb = next(s for s in specs if counts[s] == best)
+            return self.materials.resolve(name, rgb, "wall_default", f"walls of {path}")
+        name, rgb = _material_spec(node.opt("wallMaterial"))
+        return self.materials.resolve(name, rgb, "wall_default", f"{path}.wallMaterial")
+
+    def _ceiling_material(self) -> str:
+        params = self.root.opt("proceduralParameters")
+        if params is None:
+            return "ceiling_default"
+        params.dict()
+        name, rgb = _material_spec(params.opt("ceilingMaterial"))
+        color = params.opt("ceilingColor")
+        if rgb is None and color is not None:
+            rgb = _rgb(color)
+        return self.materials.resolve(
+            name, rgb, "ceiling_default", "proceduralParameters.ceilingMaterial"
+        )
+
+    def _room_at(self, x: float, y: float) -> str | None:
+        point = Point(x, y)
+        for room_id, shape in self.room_shapes:
+            if shape.covers(point):
+                return room_id
+        return None
+
+    # -- doors and windows -----------------------------------------------------------------
+    def _read_openings(self, kind: str) -> list[Any]:
+        nodes = self.root.opt(kind)
+        if nodes is None:
+            return []
+        return [self._opening(node, kind, i) for i, node in enumerate(nodes.items())]
+
+    def _opening(self, node: Node, kind: str, index: int) -> Door | Window:
+        path = f"{kind}[{index}]"
+        node.dict()
+        raw_id = node.str_("id", None)
+        asset = node.str_("assetId", "")
+        x0, x1, y0, y1 = _hole(node)
+        wall_name = node.str_("wall0")
+        wall = self.walls.get(wall_name)
+        if wall is None:
+            raise node.get("wall0").error(
+                f"unknown wall {wall_name!r}", fix="wall0 must be the id of one of 'walls'"
+            )
+        rooms = self._opening_rooms(node, wall)
+        length = math.dist(wall.start, wall.end)
+        if length < 1e-6:
+            raise node.get("wall0").error(f"wall {wall_name!r} has zero length")
+        t = (x0 + x1) / 2
+        ux, uy = ((wall.end[0] - wall.start[0]) / length, (wall.end[1] - wall.start[1]) / length)
+        centre = (wall.start[0] + ux * t, wall.start[1] + uy * t)
+        width = round(x1 - x0, 6)
+        try:
+            position, placed_wall, along = snap_opening(self.derived, rooms, centre, width)
+        except SpecError as err:
+            raise err.located(f"{self.source}: {path}") from None
+        self.spans.setdefault(placed_wall.id, []).append((along - width / 2, along + width / 2))
+        opening_id = self.opening_ids.new(raw_id or f"{kind[:-1]}_{index}")
+        top_limit = self.wall_height - _TOP_CLEARANCE
+        top = y1
+        if top_limit < top <= top_limit + _MAX_NOISE:
+            self.warnings.append(f"{path}: top lowered from {top:.3f} to {top_limit:.3f} m")
+            top = top_limit
+        if kind == "doors":
+            fields = self._door_fields(node, asset, width, top)
+            fields.update(id=opening_id, rooms=rooms, position=position)
+            return build_model(Door, fields, self.source, path)
+        lower = asset.lower()
+        window_kind = "fixed"
+        if "hung" in lower:
+            window_kind = "hung"
+        elif "slid" in lower:
+            window_kind = "slider"
+        fields = {
+            "id": opening_id,
+            "kind": window_kind,
+            "rooms": rooms,
+            "position": position,
+            "width": clamp_noise(width, 0.2, 6.0, 0.01),
+            "height": clamp_noise(round(top - y0, 6), 0.2, 4.0, 0.01),
+            "base_height": clamp_noise(y0, 0.0, 4.0, 0.01),
+        }
+        return build_model(Window, fields, self.source, path)
+
+    def _door_fields(self, node: Node, asset: str, width: float, top: float) -> dict[str, Any]:
+        lower = asset.lower()
+        if not asset or "open" in lower.replace("openable", ""):
+            door_kind = "open"
+        elif "doorframe" in lower:
+            door_kind = "doorframe"
+        else:
+            door_kind = "doorway"
+        double = "double" in lower or width > _DOUBLE_DOOR_WIDTH
+        return {
+            "kind": door_kind,
+            "leaves": "double" if double else "single",
+            "width": clamp_noise(width, 0.4, 4.0, 0.01),
+            "height": clamp_noise(top, 1.5, 4.0, 0.01),
+        }
+
+    def _opening_rooms(self, node: Node, wall: _WallInfo) -> list[str]:
+        names = [node.str_("room0", None), node.str_("room1", None)]
+        known = []
+        for name in names:
+            room_id = self.room_ids.lookup(name) if name else None
+            if room_id is not None and room_id not in known:
+                known.append(room_id)
+        if not known and wall.room:
+            wall_room = self.room_ids.lookup(wall.room)
+            if wall_room is not None:
+                known.append(wall_room)
+        if not known:
+            raise node.error(
+                f"none of the rooms {names[0]!r}, {names[1]!r} is in 'rooms'",
+                fix="room0/room1 must name rooms of the house",
+            )
+        return known
+
+    def _open_walls(self) -> list[Door]:
+        segments: list[tuple[tuple[float, float], tuple[float, float], str]] = []
+        for wall_id, wall in self.walls.items():
+            if wall.empty and not wall.exterior:
+                segments.append((wall.start, wall.end, f"walls[{wall_id!r}]"))
+        open_walls = self.root.opt("open_walls")
+        if open_walls is not None and open_walls.is_dict():
+            seg_nodes = open_walls.opt("segments")
+            for seg in seg_nodes.items() if seg_nodes is not None else []:
+                ends = seg.items()
+                if len(ends) != 2:
+                    raise seg.error("expected a segment of two points")
+                a, b = (end.vector(2, limit=1e4) for end in ends)
+                segments.append(((a[0], a[1]), (b[0], b[1]), seg.path))
+        doors: list[Door] = []
+        seen: set[tuple[float, float]] = set()
+        for start, end, label in segments:
+            mid = ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2)
+            key = (round(mid[0], 3), round(mid[1], 3))
+            if key in seen:
+                continue
+            seen.add(key)
+            door = self._open_door(mid, math.dist(start, end), label)
+            if door is not None:
+                doors.append(door)
+        return doors
+
+    def _open_door(self, mid: tuple[float, float], length: float, label: str) -> Door | None:
+        height = min(self.wall_height - _TOP_CLEARANCE, 4.0)
+        for wall in self.derived:
+            if wall.exterior:
+                continue
+            t, off = wall.locate(mid)
+            if abs(off) > 0.02 or not -0.01 <= t <= wall.length + 0.01:
+                continue
+            width = min(length, wall.length) - 0.1
+            width = min(width, 4.0)
+            if width < 0.4 or height < 1.5:
+                self.warnings.append(f"{label}: open connection too small to keep; skipped")
+                return None
+            t = min(max(t, width / 2), wall.length - width / 2)
+            spans = self.spans.setdefault(wall.id, [])
+            if any(a < t + width / 2 and t - width / 2 < b for a, b in spans):
+                self.warnings.append(f"{label}: open connection overlaps a door; skipped")
+                return None
+            spans.append((t - width / 2, t + width / 2))
+            if width < length - 0.1 - 1e-6:
+                self.warnings.append(f"{label}: open connection narrowed to {width:.2f} m")
+            fields = {
+                "id": self.opening_ids.new("open"),
+                "kind": "open",
+                "rooms": list(wall.rooms),
+                "position": wall.point_at(t),
+                "width": width,
+                "height": height,
+            }
+            return build_model(Door, fields, self.source, label)
+        self.warnings.append(f"{label}: open connection is not on a wall between rooms; skipped")
+        return None
+
+    # -- objects ---------------------------------------------------------------------------
+    def _read_objects(self) -> None:
+        nodes = self.root.opt("objects")
+        if nodes is None:
+            return
+        items = nodes.items()
+        raw_ids = {
+            item.value["id"]
+            for item in items
+            if isinstance(item.value, dict) and isinstance(item.value.get("id"), str)
+        }
+        placed: dict[str, _Placed] = {}
+        deferred: list[tuple[Node, str]] = []
+        for item in items:
+            parent_raw = _holodeck_parent(item, raw_ids)
+            if parent_raw is not None:
+                deferred.append((item, parent_raw))
+            else:
+                self._object(item, None, placed)
+        for item, parent_raw in deferred:
+            self._object(item, placed.get(parent_raw), placed)
+
+    def _object(self, node: Node, parent: _Placed | None, placed: dict[str, _Placed]) -> None:
+        node.dict()
+        raw_id = node.str_("id")
+        asset = node.str_("assetId", "")
+        ux, uy, uz = node.get("position").dict().xyz()
+        rot = node.opt("rotation")
+        rx = ry = rz = 0.0
+        if rot is not None:
+            rot.dict()
+            rx, ry, rz = rot.num("x", 0.0), rot.num("y", 0.0), rot.num("z", 0.0)
+        x, y, _ = unity_point(ux, uy, uz)
+        yaw = yaw_from_unity(ry)
+        category = _category(node, raw_id, asset)
+        footprint = _footprint(node, yaw)
+        src_size = None
+        if footprint is not None:
+            height = 2 * uy if parent is None and uy > 0 else None
+            src_size = (footprint[0], footprint[1], height) if height else None
+        object_id = self.object_ids.new(raw_id)
+        choice, warning = choose_asset(
+            self.library,
+            object_id=object_id,
+            requested=asset,
+            category=category,
+            size=_positive(src_size) if src_size else None,
+        )
+        if warning:
+            self.warnings.append(f"{node.path}: {warning}")
+        if choice.substitution is not None:
+            self.substitutions.append(choice.substitution)
+        src_height = choice.height
+        if choice.substitution is not None:
+            estimate = src_size or _category_estimate(category)
+            src_height = estimate[2] if estimate else choice.height
+        z = self._object_z(uy, src_height, choice.height, parent)
+        room = None
+        room_node = node.opt("roomId")
+        if room_node is not None:
+            room = self.room_ids.lookup(room_node.string())
+        if room is None and parent is not None:
+            room = parent.room
+        if room is None:
+            room = self._room_at(x, y)
+        fields: dict[str, Any] = {
+            "id": object_id,
+            "asset": choice.asset,
+            "position": (x, y, z),
+            "yaw_deg": yaw,
+            "scale": choice.scale,
+            "static": node.bool_("kinematic", False),
+            "support": parent.id if parent is not None else None,
+            "room": room,
+        }
+        if is_tilted(rx, rz):
+            fields["quat"] = quat_from_unity(rx, ry, rz)
+        self.objects.append(build_model(SceneObject, fields, self.source, node.path))
+        me = _Placed(object_id, room, uy + src_height / 2, z + choice.height)
+        placed.setdefault(raw_id, me)
+        children = node.opt("children")
+        for child in children.items() if children is not None else []:
+            self._object(child, me, placed)
+
+    def _object_z(
+        self, centre_y: float, src_height: float, used_height: float, parent: _Placed | None
+    ) -> float:
+        src_bottom = centre_y - src_height / 2
+        surface_src, surface_used = (
+            (0.0, 0.0)
+            if parent is None
+            else (
+                parent.src_top,
+                parent.used_top,
+            )
+        )
+        if abs(src_bottom - surface_src) <= _REST_TOL:
+            return round(surface_used, 9)
+        return round(max(centre_y - used_height / 2, 0.0), 9)
+
+    # -- lights ----------------------------------------------------------------------------
+    def _read_lights(self) -> list[Light]:
+        params = self.root.opt("proceduralParameters")
+        if params is None:
+            return []
+        params.dict()
+        nodes = params.opt("lights")
+        if nodes is None:
+            return []
+        return [self._light(node) for node in nodes.items()]
+
+    def _light(self, node: Node) -> Light:
+        node.dict()
+        kind = node.str_("type", "point").lower()
+        if kind not in ("point", "spot", "directional"):
+            raise node.get("type").error(
+                f"unknown light type {kind!r}", fix="use point, spot or directional"
+            )
+        pos = node.opt("position")
+        position = unity_point(*pos.dict().xyz()) if pos is not None else (0.0, 0.0, 2.5)
+        rot = node.opt("rotation")
+        rx = ry = rz = 0.0
+        if rot is not None:
+            rot.dict()
+            rx, ry, rz = rot.num("x", 0.0), rot.num("y", 0.0), rot.num("z", 0.0)
+        direction = unity_forward(rx, ry, rz) if kind != "point" else (0.0, 0.0, -1.0)
+        if kind == "spot" and rot is None:
+            direction = (0.0, 0.0, -1.0)
+        energy = min(max(node.num("intensity", 1.0), 0.0), 100.0)
+        rgb_node = node.opt("rgb")
+        color = _rgb(rgb_node) if rgb_node is not None else (1.0, 1.0, 1.0)
+        fields: dict[str, Any] = {
+            "id": self.light_ids.new(node.str_("id", None) or "light"),
+            "kind": kind,
+            "position": position,
+            "direction": tuple(round(d, 9) for d in direction),
+            "energy": energy,
+            "color": tuple(min(max(c, 0.0), 1.0) for c in color[:3]),
+            "cast_shadow": node.has("shadow") and kind == "directional",
+        }
+        spot = node.opt("spotAngle")
+        if kind == "spot" and spot is not None:
+            fields["cutoff_deg"] = min(max(spot.number() / 2, 1.0), 90.0)
+        return build_model(Light, fields, self.source, node.path)
+
+
+# -- small readers ---------------------------------------------------------------------------
+def _material_spec(node: Node | None) -> tuple[str | None, tuple[float, ...] | None]:
+    """A material given as a string (old schema) or ``{"name", "color"}`` (1.0.0)."""
+    if node is None:
+        return None, None
+    if isinstance(node.value, str):
+        return node.value, None
+    node.dict()
+    color = node.opt("color")
+    return node.str_("name", None), _rgb(color) if color is not None else None
+
+
+def _rgb(node: Node) -> tuple[float, ...]:
+    node.dict()
+    rgb = (node.num("r"), node.num("g"), node.num("b"))
+    alpha = node.opt("a")
+    return (*rgb, alpha.number()) if alpha is not None else rgb
+
+
+def _hole(node: Node) -> tuple[float, float, float, float]:
+    """``(x0, x1, y0, y1)`` of an opening in its wall's frame (holePolygon or boundingBox)."""
+    hole = node.opt("holePolygon")
+    if hole is not None:
+        points = hole.items()
+        if len(points) < 2:
+            raise hole.error("expected at least two corner points")
+        xs = [p.dict().num("x", limit=1e4) for p in points]
+        ys = [p.num("y", limit=1e4) for p in points]
+    else:
+        box = node.opt("boundingBox")
+        if box is None:
+            raise node.error("missing required field 'holePolygon'")
+        box.dict()
+        lo, hi = box.get("min").dict(), box.get("max").dict()
+        xs = [lo.num("x", limit=1e4), hi.num("x", limit=1e4)]
+        ys = [lo.num("y", limit=1e4), hi.num("y", limit=1e4)]
+    x0, x1, y0, y1 = (round(v, 6) for v in (min(xs), max(xs), min(ys), max(ys)))
+    if x1 - x0 < 1e-6 or y1 - y0 < 1e-6:
+        raise (hole or node).error("the opening has no area")
+    return x0, x1, max(y0, 0.0), y1
+
+
+def _category(node: Node, raw_id: str, asset: str) -> str:
+    """The object's category: Holodeck ``object_name`` (``"coffee table-0"`` -> ``"coffee
+    table"``); else the id before ``|`` (``"Sofa|2|1"`` -> ``"Sofa"``, Holodeck small objects
+    ``"mug-0|table-0 (kitchen)"`` -> ``"mug"``); else the assetId before ``_``."""
+    name = node.opt("object_name")
+    if name is not None:
+        text = name.string()
+    elif "|" in raw_id:
+        text = raw_id.split("|", 1)[0]
+    elif asset:
+        text = asset.split("_", 1)[0]
+    else:
+        text = raw_id
+    return _INSTANCE_SUFFIX.sub("", text).strip()
+
+
+def _holodeck_parent(item: Node, raw_ids: set[str]) -> str | None:
+    """Holodeck small objects are ``"<name>|<receptacle id>"``: the receptacle, if listed."""
+    value = item.value
+    if not isinstance(value, dict) or not isinstance(value.get("id"), str):
+        return None
+    raw = value["id"]
+    if "|" not in raw:
+        return None
+    parent = raw.split("|", 1)[1]
+    return parent if parent in raw_ids and parent != raw else None
+
+
+def _footprint(node: Node, yaw_deg: float) -> tuple[float, float] | None:
+    """Holodeck ``vertices`` (centimetres, world x/z) measured along the object's own axes."""
+    vertices = node.opt("vertices")
+    if vertices is None:
+        return None
+    points = []
+    for vertex in vertices.items():
+        if isinstance(vertex.value, dict):
+            points.append((vertex.num("x", limit=1e6), vertex.num("z", limit=1e6)))
+        else:
+            a, b = vertex.vector(2, limit=1e6)
+            points.append((a, b))
+    if len(points) < 3:
+        raise vertices.error("expected at least three footprint points")
+    c, s = math.cos(math.radians(yaw_deg)), math.sin(math.radians(yaw_deg))
+    along = [(px * c + py * s) / 100 for px, py in points]
+    across = [(-px * s + py * c) / 100 for px, py in points]
+    return (round(max(along) - min(along), 6), round(max(across) - min(across), 6))
+
+
+def _positive(size: tuple[float, float, float]) -> tuple[float, float, float]:
+    return (max(size[0], 0.01), max(size[1], 0.01), max(size[2], 0.01))
+
+
+def _category_estimate(category: str) -> tuple[float, float, float] | None:
+    return category_size(category) if category else None

@@ -1,0 +1,139 @@
+"""Benchmark: compile + export of a 5-room house with 150 objects (goal: under 1 s here).
+
+Asset processing is excluded: the objects come from the shipped default library. Writes JSON::
+
+    python scripts/bench_compile.py --out bench_results/compile.json [--repeats 5]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import platform
+import resource
+import statistics
+import sys
+import tempfile
+import time
+import tracemalloc
+from pathlib import Path
+
+import mujoco
+
+from holomj.export import export_scene
+from holomj.library import AssetLibrary
+from holomj.mjcf import compile_scene
+from holomj.physics.smoke import simulate
+from holomj.spec.scene import SceneSpec
+
+
+def five_room_house(library: AssetLibrary, n_objects: int = 150) -> SceneSpec:
+    """Five 5 x 4 m rooms in a row-and-a-half, doors between neighbours, objects on a grid."""
+    rooms = [
+        {
+            "id": f"room_{i}",
+            "type": "room",
+            "polygon": [[5 * i, 0], [5 * i + 5, 0], [5 * i + 5, 4], [5 * i, 4]],
+        }
+        for i in range(4)
+    ]
+    rooms.append({"id": "room_4", "type": "hall", "polygon": [[0, 4], [20, 4], [20, 7], [0, 7]]})
+    doors = [
+        {"id": f"door_{i}", "rooms": [f"room_{i}", "room_4"], "position": [5 * i + 2.5, 4]}
+        for i in range(4)
+    ]
+    doors += [
+        {"id": "front", "rooms": ["room_4"], "position": [0, 5.5], "leaves": "double", "width": 1.8}
+    ]
+    windows = [
+        {"id": f"window_{i}", "rooms": [f"room_{i}"], "position": [5 * i + 2.5, 0]}
+        for i in range(4)
+    ]
+    assets = [
+        a
+        for a in (library.get(i) for i in library.ids())
+        if max(a.meta.size[0], a.meta.size[1]) <= 0.9 and a.meta.id != "builtin:box"
+    ]
+    objects = []
+    per_room = -(-n_objects // 5)
+    for r, room in enumerate(rooms):
+        (x0, y0), (x1, _) = room["polygon"][0], room["polygon"][2]
+        cols = 10
+        for k in range(per_room):
+            if len(objects) == n_objects:
+                break
+            asset = assets[(r * per_room + k) % len(assets)]
+            x = x0 + 0.35 + (k % cols) * ((x1 - x0 - 0.7) / (cols - 1))
+            y = y0 + 0.6 + (k // cols) * 1.0
+            objects.append(
+                {
+                    "id": f"obj_{len(objects):03d}",
+                    "asset": asset.meta.id,
+                    "position": [x, y, 0.0],
+                    "static": "floor" in asset.meta.placement and asset.meta.mass > 10,
+                    "room": room["id"],
+                }
+            )
+    return SceneSpec.model_validate(
+        {
+            "name": "bench five rooms",
+            "rooms": rooms,
+            "doors": doors,
+            "windows": windows,
+            "objects": objects,
+        }
+    )
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=Path("bench_results/compile.json"))
+    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--objects", type=int, default=150)
+    args = parser.parse_args()
+
+    library = AssetLibrary.open()
+    scene = five_room_house(library, args.objects)
+    compile_times, export_times = [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        tracemalloc.start()
+        for i in range(args.repeats):
+            start = time.perf_counter()
+            compiled = compile_scene(scene, library)
+            mid = time.perf_counter()
+            export_scene(compiled, Path(tmp) / f"out_{i}")
+            end = time.perf_counter()
+            compile_times.append(mid - start)
+            export_times.append(end - mid)
+        _, peak_python = tracemalloc.get_traced_memory()
+        tracemalloc.stop()
+    totals = [c + e for c, e in zip(compile_times, export_times)]
+    smoke = simulate(compiled.model, 1.0)
+    result = {
+        "benchmark": "compile_export_5_rooms",
+        "objects": len(scene.objects),
+        "rooms": len(scene.rooms),
+        "bodies": compiled.model.nbody,
+        "geoms": compiled.model.ngeom,
+        "repeats": args.repeats,
+        "compile_s_median": round(statistics.median(compile_times), 4),
+        "export_s_median": round(statistics.median(export_times), 4),
+        "total_s_median": round(statistics.median(totals), 4),
+        "total_s_max": round(max(totals), 4),
+        "goal_s": 1.0,
+        "meets_goal": statistics.median(totals) < 1.0,
+        "peak_python_mb": round(peak_python / 2**20, 1),
+        "max_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1),
+        "smoke_warnings": smoke.warnings,
+        "mujoco": mujoco.__version__,
+        "python": platform.python_version(),
+        "machine": platform.machine(),
+    }
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    args.out.write_text(json.dumps(result, indent=2) + "\n")
+    print(json.dumps(result, indent=2))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,153 @@
+"""The library writer: validation, atomic replacement, determinism, adding assets."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from asset_pipeline import library_writer
+from asset_pipeline.library_writer import AssetBundle, add_assets, folder_for, write_library
+from holomj.errors import OutputExistsError, SpecError
+from holomj.library.store import AssetLibrary
+from holomj.spec.assets import AssetMeta
+
+BOX_OBJ = (
+    b"v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\n"
+    b"v -0.5 -0.5 1\nv 0.5 -0.5 1\nv 0.5 0.5 1\nv -0.5 0.5 1\n"
+    b"f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+    b"f 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n"
+)
+
+
+def bundle(asset_id: str, mesh: str = "box.obj", **files: bytes) -> AssetBundle:
+    meta = AssetMeta(
+        id=asset_id,
+        category="box",
+        description=f"a test box {asset_id}",
+        size=(1.0, 1.0, 1.0),
+        mass_kg=10.0,
+        visual=[{"mesh": mesh}],
+        collision=[{"kind": "box", "size": (0.5, 0.5, 0.5), "pos": (0, 0, 0.5), "volume_m3": 1.0}],
+    )
+    return AssetBundle(meta=meta, files={mesh: BOX_OBJ, **files})
+
+
+def snapshot(root: Path) -> dict[str, bytes]:
+    return {p.relative_to(root).as_posix(): p.read_bytes() for p in root.rglob("*") if p.is_file()}
+
+
+def test_written_library_opens(tmp_path: Path) -> None:
+    root = write_library(tmp_path / "lib", "test", [bundle("b"), bundle("a:1")])
+    lib = AssetLibrary.open(root)
+    assert {"a:1", "b"} <= set(lib.ids())
+    assert lib.get("a:1").root.name == "a_1"
+    index = json.loads((root / "library.json").read_text())
+    assert index == {"assets": {"a:1": "a_1", "b": "b"}, "name": "test", "schema_version": "1.0"}
+
+
+def test_output_is_byte_deterministic(tmp_path: Path) -> None:
+    first = snapshot(write_library(tmp_path / "one", "t", [bundle("a"), bundle("b")]))
+    second = snapshot(write_library(tmp_path / "two", "t", [bundle("a"), bundle("b")]))
+    assert first == second
+    text = first["a/asset.json"].decode()
+    assert (
+        text.endswith("}\n")
+        and text == json.dumps(json.loads(text), indent=2, sort_keys=True) + "\n"
+    )
+
+
+def test_existing_library_needs_overwrite(tmp_path: Path) -> None:
+    root = write_library(tmp_path / "lib", "t", [bundle("a")])
+    before = snapshot(root)
+    with pytest.raises(OutputExistsError):
+        write_library(root, "t", [bundle("b")])
+    assert snapshot(root) == before
+    write_library(root, "t", [bundle("b")], overwrite=True)
+    assert sorted(AssetLibrary.open(root).ids()) == ["b", "builtin:box"]
+
+
+def test_duplicate_ids_are_rejected(tmp_path: Path) -> None:
+    with pytest.raises(SpecError, match="duplicate asset id"):
+        write_library(tmp_path / "lib", "t", [bundle("a"), bundle("a")])
+    assert not (tmp_path / "lib").exists()
+
+
+def test_folder_clash_is_rejected(tmp_path: Path) -> None:
+    with pytest.raises(SpecError, match="already used"):
+        write_library(tmp_path / "lib", "t", [bundle("a:b"), bundle("a|b")])
+
+
+@pytest.mark.parametrize(
+    "path", ["../evil.obj", "/abs.obj", "a/../../x.obj", "a\\b.obj", "./a.obj"]
+)
+def test_unsafe_paths_are_rejected(tmp_path: Path, path: str) -> None:
+    good = bundle("a")
+    bad = AssetBundle(meta=good.meta, files={**good.files, path: b"x"})
+    with pytest.raises(SpecError, match="unsafe file path"):
+        write_library(tmp_path / "lib", "t", [bad])
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_missing_file_is_rejected(tmp_path: Path) -> None:
+    with pytest.raises(SpecError, match="missing"):
+        write_library(tmp_path / "lib", "t", [AssetBundle(meta=bundle("a").meta, files={})])
+
+
+def test_invalid_meta_is_rejected_and_leaves_old_library(tmp_path: Path) -> None:
+    root = write_library(tmp_path / "lib", "t", [bundle("a")])
+    before = snapshot(root)
+    broken = AssetMeta.model_construct(**{**bundle("b").meta.__dict__, "size": (1.0, -1.0, 1.0)})
+    with pytest.raises(SpecError):
+        write_library(
+            root,
+            "t",
+            [bundle("c"), AssetBundle(meta=broken, files={"box.obj": BOX_OBJ})],
+            overwrite=True,
+        )
+    assert snapshot(root) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["lib"]
+
+
+def test_failure_midway_leaves_old_library(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    root = write_library(tmp_path / "lib", "t", [bundle("a")])
+    before = snapshot(root)
+    real = library_writer._write_bundle
+    calls = []
+
+    def flaky(library: Path, item: AssetBundle) -> None:
+        calls.append(item.meta.id)
+        if len(calls) % 2 == 0:  # the second asset of every write
+            raise OSError("disk full")
+        real(library, item)
+
+    monkeypatch.setattr(library_writer, "_write_bundle", flaky)
+    with pytest.raises(OSError, match="disk full"):
+        write_library(root, "t", [bundle("b"), bundle("c")], overwrite=True)
+    with pytest.raises(OSError, match="disk full"):
+        add_assets(root, [bundle("d"), bundle("e")])
+    assert snapshot(root) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["lib"]
+
+
+def test_add_assets_adds_and_replaces(tmp_path: Path) -> None:
+    root = write_library(tmp_path / "lib", "t", [bundle("a"), bundle("b", extra=b"old")])
+    add_assets(root, [bundle("c"), bundle("b", mesh="new.obj")])
+    lib = AssetLibrary.open(root)
+    assert sorted(lib.ids()) == ["a", "b", "builtin:box", "c"]
+    assert [v.mesh for v in lib.get("b").meta.visual] == ["new.obj"]
+    assert not (root / "b" / "extra").exists() and not (root / "b" / "box.obj").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["lib"]
+    with pytest.raises(SpecError, match="duplicate"):
+        add_assets(root, [bundle("x"), bundle("x")])
+
+
+def test_add_assets_needs_a_library(tmp_path: Path) -> None:
+    with pytest.raises(SpecError, match="not an asset library"):
+        add_assets(tmp_path, [bundle("a")])
+
+
+def test_folder_for_makes_plain_names() -> None:
+    assert folder_for("holo:chair|v2+x") == "holo_chair_v2_x"
+    assert folder_for(".hidden") == "_hidden"

@@ -15,12 +15,12 @@ import json
 import os
 import re
 import shutil
-import tempfile
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 from typing import Any
 
+from holomj.atomic import replace_folder
 from holomj.errors import OutputExistsError, SpecError
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.base import read_json, validate_model
@@ -98,7 +98,7 @@ def write_library(
             _write_bundle(tmp, bundle)
         _write_file(tmp / INDEX_FILE, index_bytes(index))
 
-    _build_and_swap(root, fill)
+    replace_folder(root, fill)
     return root
 
 
@@ -138,7 +138,7 @@ def add_assets(root: Path | str, bundles: Sequence[AssetBundle]) -> Path:
             _write_bundle(tmp, bundle)
         _write_file(tmp / INDEX_FILE, index_bytes(new_index))
 
-    _build_and_swap(root, fill)
+    replace_folder(root, fill)
     return root
 
 
@@ -222,28 +222,3 @@ def _write_file(path: Path, data: bytes) -> None:
         handle.write(data)
         handle.flush()
         os.fsync(handle.fileno())
-
-
-def _build_and_swap(root: Path, fill: Any) -> None:
-    """Build the library with ``fill(tmp)`` in a temp folder beside ``root``, then swap it in."""
-    parent = root.parent
-    parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{root.name}.new-", dir=parent))
-    try:
-        fill(tmp)
-        os.chmod(tmp, 0o755)
-        if not root.exists():
-            os.replace(tmp, root)
-            return
-        old = Path(tempfile.mkdtemp(prefix=f".{root.name}.old-", dir=parent))
-        os.rmdir(old)
-        os.replace(root, old)
-        try:
-            os.replace(tmp, root)
-        except BaseException:
-            os.replace(old, root)
-            raise
-        shutil.rmtree(old, ignore_errors=True)
-    finally:
-        if tmp.exists():
-            shutil.rmtree(tmp, ignore_errors=True)

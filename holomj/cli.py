@@ -16,6 +16,7 @@ from rich.console import Console
 from rich.table import Table
 
 from holomj.errors import HolomjError, InputError
+from holomj.importers.detect import FORMATS
 
 app = typer.Typer(
     name="holomj",
@@ -28,7 +29,6 @@ out_console = Console(soft_wrap=True)
 err_console = Console(stderr=True, highlight=False, soft_wrap=True)
 
 T = TypeVar("T")
-FORMATS = ("holomj", "procthor", "holodeck", "scenedef")
 
 
 def _guard(job: Callable[[], T]) -> T:
@@ -79,16 +79,6 @@ def compile_command(
     """Compile a scene or house file into a self-contained MuJoCo package in OUT."""
     from holomj.pipeline import compile_file
 
-    if fmt is not None and fmt not in FORMATS:
-        _guard(
-            lambda: _raise(
-                InputError(
-                    f"unknown format {fmt!r}",
-                    where="--format",
-                    fix=f"use one of: {', '.join(FORMATS)}",
-                )
-            )
-        )
     report = _guard(
         lambda: compile_file(
             input_path,
@@ -119,10 +109,6 @@ def compile_command(
             out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
         if report.sim_warnings:
             out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
-
-
-def _raise(err: HolomjError) -> None:
-    raise err
 
 
 @app.command("info")

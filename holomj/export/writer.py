@@ -14,12 +14,10 @@ a failure or a rejected input never leaves a half-written OUT behind.
 from __future__ import annotations
 
 import json
-import os
-import shutil
-import tempfile
 from pathlib import Path
 from typing import Any
 
+from holomj.atomic import replace_folder
 from holomj.errors import ExportError, OutputExistsError
 from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene
@@ -66,20 +64,10 @@ def export_scene(
     """Write ``compiled`` to ``out`` (see module docstring) and return ``out``."""
     out = Path(out)
     prepare_output(out, overwrite)
-    parent = out.resolve().parent
     try:
-        parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=parent))
+        replace_folder(out, lambda tmp: _write_tree(compiled, tmp, extra_json or {}))
     except OSError as err:
-        raise ExportError(f"cannot create the output folder: {err}", where=str(out)) from None
-    try:
-        _write_tree(compiled, tmp, extra_json or {})
-        _swap_into_place(tmp, out.resolve())
-    except BaseException as err:
-        shutil.rmtree(tmp, ignore_errors=True)
-        if isinstance(err, OSError):
-            raise ExportError(f"writing failed: {err}", where=str(out)) from None
-        raise
+        raise ExportError(f"writing failed: {err}", where=str(out)) from None
     return out
 
 
@@ -95,19 +83,3 @@ def _write_tree(compiled: CompiledScene, root: Path, extra_json: dict[str, Any])
         target.write_bytes(data)
     for name, data in sorted(extra_json.items()):
         (root / name).write_text(dump_json(data), encoding="utf-8")
-
-
-def _swap_into_place(tmp: Path, out: Path) -> None:
-    """Rename ``tmp`` to ``out``; an existing ``out`` is moved aside first and removed after."""
-    if not out.exists():
-        os.replace(tmp, out)
-        return
-    backup = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.parent))
-    backup.rmdir()
-    os.replace(out, backup)
-    try:
-        os.replace(tmp, out)
-    except OSError:
-        os.replace(backup, out)
-        raise
-    shutil.rmtree(backup, ignore_errors=True)

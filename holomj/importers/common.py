@@ -3,12 +3,12 @@ scene, the safety net that turns stray Python errors into HolomjErrors, and open
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any, TypeVar
 
 from pydantic import BaseModel, ValidationError
 
-from holomj.errors import AssetNotFoundError, FormatError, HolomjError, SpecError
+from holomj.errors import AssetNotFoundError, SpecError
 from holomj.library.store import AssetLibrary
 from holomj.spec.base import field_path
 from holomj.spec.scene import SceneSpec
@@ -72,29 +72,6 @@ def check_assets(scene: SceneSpec, library: AssetLibrary, source: str) -> None:
                 library.get(obj.asset)
             except AssetNotFoundError as err:
                 raise err.located(f"{source}: objects[{index}].asset") from None
-
-
-def guarded(source: str, run: Callable[[], ResultT]) -> ResultT:
-    """Run an import; a stray Python error on malformed input becomes a FormatError."""
-    try:
-        return run()
-    except HolomjError:
-        raise
-    except (
-        KeyError,
-        TypeError,
-        ValueError,
-        AttributeError,
-        IndexError,
-        ZeroDivisionError,
-        OverflowError,
-        RecursionError,
-    ) as err:
-        raise FormatError(
-            f"malformed input ({type(err).__name__}: {err})",
-            where=source,
-            fix="check the file against the format's schema",
-        ) from None
 
 
 def snap_opening(

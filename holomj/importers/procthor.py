@@ -55,8 +55,6 @@ from holomj.errors import SpecError
 from holomj.importers.common import (
     build_model,
     clamp_noise,
-    finish_scene,
-    guarded,
     snap_opening,
 )
 from holomj.importers.frames import (
@@ -66,14 +64,14 @@ from holomj.importers.frames import (
     unity_point,
     yaw_from_unity,
 )
-from holomj.importers.ids import IdMap, sanitise
+from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
-from holomj.importers.materials import MaterialResolver
-from holomj.importers.result import ImportResult, Substitution
+from holomj.importers.result import ImportResult
+from holomj.importers.state import ImportState
 from holomj.importers.substitute import category_size, choose_asset
 from holomj.library.store import AssetLibrary
 from holomj.spec.scene import Door, Light, Room, SceneObject, Window
-from holomj.spec.walls import Wall, derive_walls, room_polygon
+from holomj.spec.walls import Wall, room_polygon
 
 IMPORT_WALL_THICKNESS = 0.05
 DEFAULT_WALL_HEIGHT = 2.7
@@ -112,22 +110,12 @@ def import_procthor(data: Any, library: AssetLibrary, source: str) -> ImportResu
     :class:`~holomj.errors.FormatError` (shape of the JSON) or :class:`SpecError` (geometry),
     each naming the source and the JSON path.
     """
-    return guarded(source, lambda: _ProcthorImport(data, library, source).run())
+    return _ProcthorImport(data, library, source).run()
 
 
-class _ProcthorImport:
+class _ProcthorImport(ImportState):
     def __init__(self, data: Any, library: AssetLibrary, source: str) -> None:
-        self.root = Node(data, source).dict()
-        self.library = library
-        self.source = source
-        self.materials = MaterialResolver()
-        self.warnings: list[str] = []
-        self.substitutions: list[Substitution] = []
-        self.room_ids = IdMap("room")
-        self.opening_ids = IdMap("opening")
-        self.object_ids = IdMap("object")
-        self.light_ids = IdMap("light")
-        self.rooms: list[Room] = []
+        super().__init__(data, library, source)
         self.room_shapes: list[tuple[str, Polygon]] = []
         self.walls: dict[str, _WallInfo] = {}
         self.derived: list[Wall] = []
@@ -145,10 +133,7 @@ class _ProcthorImport:
         self._read_walls()
         self.wall_height = self._wall_height()
         self._read_rooms(room_nodes)
-        try:
-            self.derived = derive_walls(self.rooms)
-        except SpecError as err:
-            raise err.located(f"{self.source}: rooms") from None
+        self.derived = self.derive_walls()
         doors = self._read_openings("doors")
         windows = self._read_openings("windows")
         doors += self._open_walls()
@@ -167,13 +152,7 @@ class _ProcthorImport:
             "materials": self.materials.scene_materials,
             "source": self.source,
         }
-        scene = finish_scene(fields, self.library, self.source)
-        return ImportResult(
-            scene=scene,
-            format="holodeck" if self.holodeck else "procthor",
-            substitutions=self.substitutions,
-            warnings=self.materials.warnings + self.warnings,
-        )
+        return self.result(fields, "holodeck" if self.holodeck else "procthor")
 
     def _looks_like_holodeck(self, room_nodes: list[Node]) -> bool:
         if self.root.has("wall_height") or self.root.has("open_walls"):

@@ -48,17 +48,17 @@ from pathlib import PurePath
 from typing import Any
 
 from holomj.errors import SpecError
-from holomj.importers.common import build_model, finish_scene, guarded, snap_opening
+from holomj.importers.common import build_model, snap_opening
 from holomj.importers.frames import normalise_deg, quat_from_euler_xyz
-from holomj.importers.ids import IdMap, sanitise
+from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
-from holomj.importers.materials import MaterialResolver
-from holomj.importers.result import ImportResult, Substitution
+from holomj.importers.result import ImportResult
+from holomj.importers.state import ImportState
 from holomj.importers.substitute import choose_asset
 from holomj.library.store import AssetLibrary
 from holomj.spec.materials import BUILTIN_MATERIALS, Material
 from holomj.spec.scene import Door, Light, Room, SceneObject, Window
-from holomj.spec.walls import derive_walls, room_polygon
+from holomj.spec.walls import room_polygon
 
 DEFAULT_WALL_HEIGHT = 2.7
 _TILT_TOL = 1e-6
@@ -66,23 +66,13 @@ _TILT_TOL = 1e-6
 
 def import_scenedef(data: Any, library: AssetLibrary, source: str) -> ImportResult:
     """Import a 3D-Generalist SceneDef dictionary (schema in this module's docstring)."""
-    return guarded(source, lambda: _SceneDefImport(data, library, source).run())
+    return _SceneDefImport(data, library, source).run()
 
 
-class _SceneDefImport:
+class _SceneDefImport(ImportState):
     def __init__(self, data: Any, library: AssetLibrary, source: str) -> None:
-        self.root = Node(data, source).dict()
-        self.library = library
-        self.source = source
-        self.materials = MaterialResolver()
+        super().__init__(data, library, source)
         self.defined: dict[str, Material] = {}
-        self.warnings: list[str] = []
-        self.substitutions: list[Substitution] = []
-        self.room_ids = IdMap("room")
-        self.object_ids = IdMap("object")
-        self.opening_ids = IdMap("opening")
-        self.light_ids = IdMap("light")
-        self.rooms: list[Room] = []
         self.heights: list[float] = []
 
     def run(self) -> ImportResult:
@@ -91,10 +81,7 @@ class _SceneDefImport:
         for index, node in enumerate(room_nodes):
             self._room(node, index)
         wall_height = self.root.num("wall_height", max(self.heights, default=DEFAULT_WALL_HEIGHT))
-        try:
-            walls = derive_walls(self.rooms)
-        except SpecError as err:
-            raise err.located(f"{self.source}: rooms") from None
+        walls = self.derive_walls()
         doors = [self._opening(n, "doors", walls) for n in self._list("doors")]
         windows = [self._opening(n, "windows", walls) for n in self._list("windows")]
         objects = self._objects()
@@ -110,13 +97,7 @@ class _SceneDefImport:
             "materials": {**self.materials.scene_materials, **self.defined},
             "source": self.source,
         }
-        scene = finish_scene(fields, self.library, self.source)
-        return ImportResult(
-            scene=scene,
-            format="scenedef",
-            substitutions=self.substitutions,
-            warnings=self.materials.warnings + self.warnings,
-        )
+        return self.result(fields, "scenedef")
 
     # -- helpers ---------------------------------------------------------------------------
     def _list(self, key: str) -> list[Node]:

@@ -13,8 +13,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from holomj.errors import OutputExistsError
-from holomj.export import export_scene
+from holomj.errors import ExportError, OutputExistsError
+from holomj.export import export_scene, writer
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.spec.base import read_json
@@ -117,16 +117,27 @@ def test_failed_export_leaves_nothing(
     tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibrary, monkeypatch
 ) -> None:
     compiled = compile_scene(two_room_scene, empty_library)
+    real_write = writer._write_tree
 
-    def broken(*args, **kwargs):
+    def half_written(c, root, extra):
+        real_write(c, root, extra)
         raise OSError(28, "No space left on device")
 
-    monkeypatch.setattr("holomj.export.writer._swap_into_place", broken)
+    monkeypatch.setattr(writer, "_write_tree", half_written)
     target = tmp_path / "target"
     target.mkdir()
-    with pytest.raises(Exception, match="No space left"):
+    with pytest.raises(ExportError, match="No space left"):
         export_scene(compiled, target / "out")
     assert list(target.iterdir()) == []
+    # A failed overwrite keeps the previous export intact.
+    monkeypatch.setattr(writer, "_write_tree", real_write)
+    export_scene(compiled, target / "out")
+    before = (target / "out" / "scene.xml").read_bytes()
+    monkeypatch.setattr(writer, "_write_tree", half_written)
+    with pytest.raises(ExportError):
+        export_scene(compiled, target / "out", overwrite=True)
+    assert (target / "out" / "scene.xml").read_bytes() == before
+    assert [p.name for p in target.iterdir()] == ["out"]
 
 
 def test_extra_reports_are_written(

@@ -1,0 +1,49 @@
+"""What every importer keeps while it reads one file: ids, materials, warnings, substitutions."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from holomj.errors import SpecError
+from holomj.importers.common import finish_scene
+from holomj.importers.ids import IdMap
+from holomj.importers.jsonpath import Node
+from holomj.importers.materials import MaterialResolver
+from holomj.importers.result import ImportResult, Substitution
+from holomj.library.store import AssetLibrary
+from holomj.spec.scene import Room
+from holomj.spec.walls import Wall, derive_walls
+
+
+class ImportState:
+    """Shared state and the shared last steps of the importers."""
+
+    def __init__(self, data: Any, library: AssetLibrary, source: str) -> None:
+        self.root = Node(data, source).dict()
+        self.library = library
+        self.source = source
+        self.materials = MaterialResolver()
+        self.warnings: list[str] = []
+        self.substitutions: list[Substitution] = []
+        self.room_ids = IdMap("room")
+        self.opening_ids = IdMap("opening")
+        self.object_ids = IdMap("object")
+        self.light_ids = IdMap("light")
+        self.rooms: list[Room] = []
+
+    def derive_walls(self) -> list[Wall]:
+        """Walls of the rooms read so far; geometry errors name the source file."""
+        try:
+            return derive_walls(self.rooms)
+        except SpecError as err:
+            raise err.located(f"{self.source}: rooms") from None
+
+    def result(self, fields: dict[str, Any], fmt: str) -> ImportResult:
+        """Validate the scene built from ``fields`` and wrap it with this import's report."""
+        scene = finish_scene(fields, self.library, self.source)
+        return ImportResult(
+            scene=scene,
+            format=fmt,
+            substitutions=self.substitutions,
+            warnings=self.materials.warnings + self.warnings,
+        )

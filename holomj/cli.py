@@ -5,6 +5,7 @@ Bad input prints one line on stderr and exits with 2; failures exit with 1. Noth
 
 from __future__ import annotations
 
+import contextlib
 import json
 import sys
 from collections.abc import Callable
@@ -79,16 +80,21 @@ def compile_command(
     """Compile a scene or house file into a self-contained MuJoCo package in OUT."""
     from holomj.pipeline import compile_file
 
-    report = _guard(
-        lambda: compile_file(
-            input_path,
-            out,
-            library_path=library,
-            fmt=fmt,
-            overwrite=overwrite,
-            check_seconds=check_seconds,
+    with (
+        err_console.status(f"compiling {input_path}", spinner="dots")
+        if not (quiet or as_json)
+        else contextlib.nullcontext()
+    ):
+        report = _guard(
+            lambda: compile_file(
+                input_path,
+                out,
+                library_path=library,
+                fmt=fmt,
+                overwrite=overwrite,
+                check_seconds=check_seconds,
+            )
         )
-    )
     if as_json:
         _emit_json(report.to_dict())
     elif not quiet:

@@ -30,7 +30,8 @@ Conventions (see :mod:`holomj.importers.frames`)
   openings (``holePolygon`` x runs along ``wall0`` from its polygon's first vertex, y is up),
   to give each room its wall material (the most common one of its walls) and the wall height
   (their highest point, or Holodeck's ``wall_height``). Imported scenes use thin walls,
-  ``wall_thickness = exterior_wall_thickness = 0.05`` m, like ProcTHOR's.
+  ``wall_thickness = 0.05`` m, like ProcTHOR's; exterior walls keep the default thickness
+  (they grow outwards, so they take no room space and stop fast objects tunnelling).
 * Door kinds: an assetId with ``Doorframe`` -> ``doorframe`` (a frame, no leaf); ``Doorway`` ->
   ``doorway`` (a frame with a leaf); no assetId, or one containing ``open`` -> ``open``; any
   other asset -> ``doorway``. ``Double`` in the assetId or a hole wider than 1.5 m -> two
@@ -143,7 +144,6 @@ class _ProcthorImport(ImportState):
             "name": sanitise(PurePath(self.source).stem, "scene")[:128],
             "wall_height": self.wall_height,
             "wall_thickness": IMPORT_WALL_THICKNESS,
-            "exterior_wall_thickness": IMPORT_WALL_THICKNESS,
             "rooms": self.rooms,
             "doors": doors,
             "windows": windows,

@@ -1,5 +1,8 @@
-"""Offline asset processing for holomj: the library writer and the procedural default assets.
+"""Offline asset processing for holomj: mesh import (CoACD), thumbnails, the library writer and
+the procedural default library.
 
-This package imports :mod:`holomj.spec`; holomj itself never imports it (except lazily from
-the CLI).
+This package imports :mod:`holomj`; holomj itself never imports it (except lazily from the
+CLI). Importing holomj first also picks the headless GL backend before MuJoCo loads.
 """
+
+import holomj  # noqa: F401  (sets MUJOCO_GL before any mujoco import)

@@ -3,25 +3,29 @@
 A library folder holds ``library.json`` (a :class:`~holomj.spec.assets.LibraryIndex`) and one
 folder per asset with its ``asset.json`` (an :class:`~holomj.spec.assets.AssetMeta`) and files.
 
-Every write builds the complete new library in a temporary folder beside the target (same
-parent, so the final rename stays on one file system) and then swaps it in. Invalid input is
-rejected before anything touches the disk; a failure while writing removes the temporary
-folder and leaves the old library as it was.
+A new library is built whole in a temporary folder beside the target (same parent, so the
+final rename stays on one file system) and then swapped in. Adding to or removing from an
+existing library writes new asset folders first and commits by replacing ``library.json`` in
+one rename. Invalid input is rejected before anything touches the disk; a failure (even a
+kill) leaves the library as its last committed index describes it.
 """
 
 from __future__ import annotations
 
+import contextlib
+import fcntl
+import itertools
 import json
 import os
 import re
 import shutil
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 from typing import Any
 
 from holomj.atomic import replace_folder
-from holomj.errors import OutputExistsError, SpecError
+from holomj.errors import AssetNotFoundError, OutputExistsError, SpecError
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.base import read_json, validate_model
 
@@ -105,10 +109,115 @@ def write_library(
 def add_assets(root: Path | str, bundles: Sequence[AssetBundle]) -> Path:
     """Add assets to the library at ``root``, replacing assets with the same id.
 
-    The whole library is rebuilt beside ``root`` and swapped in, so a failure leaves the old
-    library untouched. Returns ``root``.
+    Each new asset is written to a fresh folder inside the library (an unused name, so an
+    asset being replaced stays intact), then ``library.json`` is replaced in one rename: that
+    rename is the commit. A crash before it leaves the index as it was; folders it does not
+    name are swept away by the next write. Returns ``root``.
     """
     root = Path(root)
+    with library_lock(root):
+        index = _read_index(root)
+        taken = set(index.assets.values()) | {p.name for p in root.iterdir()}
+        staged: list[AssetBundle] = []
+        for bundle in bundles:
+            folder = _free_folder(folder_for(bundle.meta.id), taken)
+            taken.add(folder)
+            staged.append(AssetBundle(meta=bundle.meta, files=bundle.files, folder=folder))
+        checked = _checked_bundles(staged, existing={})
+        replaced = {b.meta.id for b in checked}
+        kept = {i: f for i, f in index.assets.items() if i not in replaced}
+        in_use = set(kept.values())
+        clash = next((b for b in checked if b.folder_name in in_use), None)
+        if clash is not None:
+            raise SpecError(f"folder {clash.folder_name!r} is in use", where=str(root))
+        new_index = validate_model(
+            LibraryIndex,
+            {"name": index.name, "assets": {**kept, **{b.meta.id: b.folder_name for b in checked}}},
+            str(root / INDEX_FILE),
+        )
+        try:
+            for bundle in checked:
+                replace_folder(
+                    root / bundle.folder_name, lambda tmp, b=bundle: _fill_bundle(tmp, b)
+                )
+            _commit_index(root, new_index)
+        except BaseException:
+            for bundle in checked:
+                shutil.rmtree(root / bundle.folder_name, ignore_errors=True)
+            raise
+        sweep_unindexed(root, new_index)
+    return root
+
+
+def remove_assets(root: Path | str, asset_ids: Sequence[str]) -> list[str]:
+    """Remove assets from the library at ``root``; returns the folders that were deleted."""
+    root = Path(root)
+    with library_lock(root):
+        index = _read_index(root)
+        missing = [i for i in asset_ids if i not in index.assets]
+        if missing:
+            raise AssetNotFoundError(
+                f"asset {missing[0]!r} is not in the library",
+                where=str(root),
+                fix="see 'holomj assets list'",
+            )
+        kept = {i: f for i, f in index.assets.items() if i not in set(asset_ids)}
+        new_index = validate_model(
+            LibraryIndex, {"name": index.name, "assets": kept}, str(root / INDEX_FILE)
+        )
+        _commit_index(root, new_index)
+        return sweep_unindexed(root, new_index)
+
+
+def sweep_unindexed(root: Path, index: LibraryIndex) -> list[str]:
+    """Delete asset folders and leftovers the index does not name (crash debris, removed assets).
+
+    Hidden entries (``.cache``, ``.lock``) and files are kept.
+    """
+    named = set(index.assets.values())
+    removed = []
+    for entry in sorted(root.iterdir()):
+        hidden_leftover = entry.name.startswith(".") and (
+            ".new-" in entry.name or ".old-" in entry.name
+        )
+        if entry.is_dir() and (
+            (not entry.name.startswith(".") and entry.name not in named) or hidden_leftover
+        ):
+            shutil.rmtree(entry, ignore_errors=True)
+            removed.append(entry.name)
+    return removed
+
+
+_HELD_LOCKS: dict[Path, int] = {}
+
+
+@contextlib.contextmanager
+def library_lock(root: Path) -> Iterator[None]:
+    """An exclusive lock on a library, so concurrent writers take turns (re-entrant).
+
+    The lock file sits beside the library (``.<name>.lock``), so it survives the library folder
+    being replaced as a whole.
+    """
+    key = Path(root).absolute()
+    if _HELD_LOCKS.get(key):
+        _HELD_LOCKS[key] += 1
+        try:
+            yield
+        finally:
+            _HELD_LOCKS[key] -= 1
+        return
+    key.parent.mkdir(parents=True, exist_ok=True)
+    with open(key.parent / f".{key.name}.lock", "a+b") as handle:
+        fcntl.flock(handle.fileno(), fcntl.LOCK_EX)
+        _HELD_LOCKS[key] = 1
+        try:
+            yield
+        finally:
+            _HELD_LOCKS.pop(key, None)
+            fcntl.flock(handle.fileno(), fcntl.LOCK_UN)
+
+
+def _read_index(root: Path) -> LibraryIndex:
     index_path = root / INDEX_FILE
     if not index_path.is_file():
         raise SpecError(
@@ -116,30 +225,32 @@ def add_assets(root: Path | str, bundles: Sequence[AssetBundle]) -> Path:
             where=str(root),
             fix="create it first with write_library()",
         )
-    index = validate_model(LibraryIndex, read_json(index_path), str(index_path))
-    checked = _checked_bundles(bundles, existing=dict(index.assets))
-    replaced = {b.meta.id for b in checked}
-    kept = {i: f for i, f in index.assets.items() if i not in replaced}
-    new_assets = {**kept, **{b.meta.id: b.folder_name for b in checked}}
-    new_index = validate_model(
-        LibraryIndex, {"name": index.name, "assets": new_assets}, str(index_path)
-    )
-    dropped = {index.assets[i] for i in replaced if i in index.assets} - set(kept.values())
+    return validate_model(LibraryIndex, read_json(index_path), str(index_path))
 
-    def fill(tmp: Path) -> None:
-        for entry in sorted(root.iterdir()):
-            if entry.name == INDEX_FILE or entry.name in dropped:
-                continue
-            if entry.is_dir() and not entry.is_symlink():
-                shutil.copytree(entry, tmp / entry.name, symlinks=True)
-            else:
-                shutil.copy2(entry, tmp / entry.name, follow_symlinks=False)
-        for bundle in checked:
-            _write_bundle(tmp, bundle)
-        _write_file(tmp / INDEX_FILE, index_bytes(new_index))
 
-    replace_folder(root, fill)
-    return root
+def _commit_index(root: Path, index: LibraryIndex) -> None:
+    tmp = root / f".{INDEX_FILE}.tmp-{os.getpid()}"
+    tmp.unlink(missing_ok=True)
+    _write_file(tmp, index_bytes(index))
+    os.replace(tmp, root / INDEX_FILE)
+
+
+def _free_folder(base: str, taken: set[str]) -> str:
+    if base not in taken:
+        return base
+    for n in itertools.count(2):
+        candidate = f"{base}-{n}"
+        if candidate not in taken:
+            return candidate
+    raise AssertionError("unreachable")
+
+
+def _fill_bundle(folder: Path, bundle: AssetBundle) -> None:
+    for rel, data in sorted(bundle.files.items()):
+        target = folder / rel
+        target.parent.mkdir(parents=True, exist_ok=True)
+        _write_file(target, data)
+    _write_file(folder / META_FILE, meta_bytes(bundle.meta))
 
 
 def _checked_bundles(bundles: Iterable[AssetBundle], existing: dict[str, str]) -> list[AssetBundle]:
@@ -210,11 +321,7 @@ def _safe_relpath(rel: str, where: str) -> str:
 def _write_bundle(library: Path, bundle: AssetBundle) -> None:
     folder = library / bundle.folder_name
     folder.mkdir()
-    for rel, data in sorted(bundle.files.items()):
-        target = folder / rel
-        target.parent.mkdir(parents=True, exist_ok=True)
-        _write_file(target, data)
-    _write_file(folder / META_FILE, meta_bytes(bundle.meta))
+    _fill_bundle(folder, bundle)
 
 
 def _write_file(path: Path, data: bytes) -> None:

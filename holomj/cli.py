@@ -8,15 +8,15 @@ from __future__ import annotations
 import contextlib
 import json
 import sys
-from collections.abc import Callable
 from pathlib import Path
-from typing import Annotated, Any, TypeVar
+from typing import Annotated
 
 import typer
-from rich.console import Console
 from rich.table import Table
 
-from holomj.errors import HolomjError, InputError
+from holomj.cli_assets import assets_app, resolve_library
+from holomj.cli_common import emit_json, err_console, guard, out_console
+from holomj.errors import InputError
 from holomj.importers.detect import FORMATS
 
 app = typer.Typer(
@@ -26,23 +26,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
     add_completion=False,
 )
-out_console = Console(soft_wrap=True)
-err_console = Console(stderr=True, highlight=False, soft_wrap=True)
-
-T = TypeVar("T")
-
-
-def _guard(job: Callable[[], T]) -> T:
-    """Run ``job``; a HolomjError becomes one line on stderr and its exit code."""
-    try:
-        return job()
-    except HolomjError as err:
-        err_console.print(f"error: {err.one_line()}", markup=False)
-        raise typer.Exit(code=err.exit_code) from None
-
-
-def _emit_json(data: Any) -> None:
-    sys.stdout.write(json.dumps(data, indent=2, sort_keys=True) + "\n")
+app.add_typer(assets_app, name="assets")
 
 
 @app.command("compile")
@@ -60,7 +44,10 @@ def compile_command(
     ] = None,
     library: Annotated[
         Path | None,
-        typer.Option("--library", help="Asset library folder (default: the built-in one)."),
+        typer.Option(
+            "--library",
+            help="Asset library folder (default: $HOLOMJ_HOME/library, built on first use).",
+        ),
     ] = None,
     overwrite: Annotated[
         bool, typer.Option("--overwrite", help="Replace OUT if it exists.")
@@ -80,23 +67,24 @@ def compile_command(
     """Compile a scene or house file into a self-contained MuJoCo package in OUT."""
     from holomj.pipeline import compile_file
 
+    library_root = resolve_library(library)
     with (
         err_console.status(f"compiling {input_path}", spinner="dots")
         if not (quiet or as_json)
         else contextlib.nullcontext()
     ):
-        report = _guard(
+        report = guard(
             lambda: compile_file(
                 input_path,
                 out,
-                library_path=library,
+                library_path=library_root,
                 fmt=fmt,
                 overwrite=overwrite,
                 check_seconds=check_seconds,
             )
         )
     if as_json:
-        _emit_json(report.to_dict())
+        emit_json(report.to_dict())
     elif not quiet:
         scene, model = report.scene, report.model
         out_console.print(
@@ -127,9 +115,9 @@ def info_command(
     """Rooms, objects, bodies, geoms and mass of an exported scene."""
     from holomj.export.info import folder_summary
 
-    summary = _guard(lambda: folder_summary(folder))
+    summary = guard(lambda: folder_summary(folder))
     if as_json:
-        _emit_json(summary)
+        emit_json(summary)
         return
     table = Table(title=f"{summary['name']} ({summary['folder']})")
     table.add_column("room")
@@ -161,11 +149,11 @@ def schema_command(
     """Print the JSON Schema of a holomj data format."""
     from holomj.spec.schema import json_schema
 
-    text = json.dumps(_guard(lambda: json_schema(kind)), indent=2, sort_keys=True) + "\n"
+    text = json.dumps(guard(lambda: json_schema(kind)), indent=2, sort_keys=True) + "\n"
     if out is None:
         sys.stdout.write(text)
     else:
-        _guard(lambda: _write_text(out, text))
+        guard(lambda: _write_text(out, text))
 
 
 def _write_text(path: Path, text: str) -> None:

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import mujoco
 
+from asset_pipeline.default_library import ensure_default_library
 from holomj.export import export_scene
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
@@ -92,7 +93,7 @@ def main() -> int:
     parser.add_argument("--objects", type=int, default=150)
     args = parser.parse_args()
 
-    library = AssetLibrary.open()
+    library = AssetLibrary.open(ensure_default_library())
     scene = five_room_house(library, args.objects)
     compile_times, export_times = [], []
     with tempfile.TemporaryDirectory() as tmp:

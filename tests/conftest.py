@@ -5,9 +5,12 @@ from __future__ import annotations
 import json
 import os
 import shutil
+import tempfile
 from pathlib import Path
 
 os.environ.setdefault("MUJOCO_GL", "egl")
+# Never touch the user's cache: the default library is built once per test process here.
+os.environ["HOLOMJ_HOME"] = tempfile.mkdtemp(prefix="holomj-test-home-")
 
 import pytest
 
@@ -39,6 +42,14 @@ def empty_library(tmp_path: Path) -> AssetLibrary:
         json.dumps({"schema_version": "1.0", "name": "empty", "assets": {}})
     )
     return AssetLibrary.open(root)
+
+
+@pytest.fixture(scope="session")
+def default_library() -> AssetLibrary:
+    """The procedural default library, built on first use into this session's HOLOMJ_HOME."""
+    from asset_pipeline.default_library import ensure_default_library
+
+    return AssetLibrary.open(ensure_default_library())
 
 
 @pytest.fixture(scope="session")

@@ -1,31 +1,58 @@
-"""Procedural assets built from boxes, cylinders and surfaces of revolution.
+"""Parametric procedural assets: furniture, fixtures and small objects for holomj scenes.
 
-:func:`default_assets` builds the bundles of holomj's default library and
-:func:`build_default_library` writes them (``scripts/build_default_library.py`` calls it).
+Every category in :data:`CATEGORIES` has a generator taking a target size (its bounding box,
+x = depth, y = width, z = height, metres) and a seed for style variation.
+:func:`generate_asset` builds one asset; :func:`default_assets` the default library (two style
+variants of each piece of furniture, one or two of each small object) and
+:func:`build_default_library` writes it. :data:`DEFAULT_LIBRARY_VERSION` changes whenever the
+generators do, so a library built earlier can be recognised as stale.
 """
 
 from __future__ import annotations
 
+import hashlib
 from pathlib import Path
 
-from asset_pipeline.library_writer import AssetBundle, write_library
-from asset_pipeline.procedural.assembly import AssetDesign, assemble, assemble_all
-from asset_pipeline.procedural.catalog import default_designs
+import numpy as np
 
-DEFAULT_LIBRARY_NAME = "holomj-default"
+from asset_pipeline.library_writer import write_library
+from asset_pipeline.procedural.assembly import AssetDesign, assemble
+from asset_pipeline.procedural.catalog import default_assets, default_variants
+from asset_pipeline.procedural.registry import (
+    CATEGORIES,
+    CategoryInfo,
+    Design,
+    category_info,
+    generate_asset,
+)
+from holomj.spec.assets import ASSET_SCHEMA_VERSION
+
+
+def _source_hash() -> str:
+    """sha256 over the generator sources, the asset schema and numpy's version (its RNG)."""
+    digest = hashlib.sha256(f"schema {ASSET_SCHEMA_VERSION} numpy {np.__version__}\0".encode())
+    for path in sorted(Path(__file__).parent.glob("*.py")):
+        digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()[:12]
+
+
+DEFAULT_LIBRARY_VERSION: str = _source_hash()
+DEFAULT_LIBRARY_NAME = f"holomj-default-{DEFAULT_LIBRARY_VERSION}"
 
 __all__ = [
+    "CATEGORIES",
     "DEFAULT_LIBRARY_NAME",
+    "DEFAULT_LIBRARY_VERSION",
     "AssetDesign",
+    "CategoryInfo",
+    "Design",
     "assemble",
     "build_default_library",
+    "category_info",
     "default_assets",
+    "default_variants",
+    "generate_asset",
 ]
-
-
-def default_assets() -> list[AssetBundle]:
-    """The bundles of the default library, in catalogue order."""
-    return assemble_all(default_designs())
 
 
 def build_default_library(root: Path | str, overwrite: bool = True) -> Path:

@@ -37,8 +37,17 @@ class AssetDesign:
     parts: tuple[Part, ...]
 
 
-def assemble(design: AssetDesign) -> AssetBundle:
-    """Build the bundle (metadata + OBJ files) of ``design``."""
+CLEARANCE = 0.05  # free height required above every support surface
+PROUD = 1e-3  # parts standing less than this above a surface (tape, a screen) do not block it
+
+
+def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBundle:
+    """Build the bundle (metadata + OBJ files) of ``design``.
+
+    With ``expected_size`` the visual bounding box must match it within 1 mm. Every support
+    surface must have :data:`CLEARANCE` of free space above it (no part's bounds reach into
+    the prism over its polygon); a violation is a bug in the design and raises ValueError.
+    """
     parts = centred_parts(design.parts)
     by_material: dict[str, tuple[Material, list]] = {}
     for part in parts:
@@ -64,8 +73,14 @@ def assemble(design: AssetDesign) -> AssetBundle:
         )
     vertices = np.concatenate(all_vertices)
     low, high = vertices.min(axis=0), vertices.max(axis=0)
+    if expected_size is not None and np.any(np.abs(high - low - expected_size) > 1e-3):
+        raise ValueError(
+            f"{design.id}: generated size {tuple(np.round(high - low, 4))} differs from the "
+            f"requested {expected_size}"
+        )
     colliders = [c for part in parts for c in part.colliders()]
     _check_inside(design.id, colliders, low, high)
+    _check_clearance(design.id, parts)
     collision = [_collision_part(c) for c in colliders]
     volume = sum(c.volume_m3 for c in collision)
     surfaces = [_support_surface(s) for part in parts for s in part.surfaces()]
@@ -115,6 +130,39 @@ def _check_inside(asset_id: str, colliders: list[Collider], low: np.ndarray, hig
         pos = np.asarray(collider.pos)
         if np.any(pos - half < low - tol) or np.any(pos + half > high + tol):
             raise ValueError(f"{asset_id}: collider {collider} sticks out of the visual bounds")
+
+
+def _part_boxes(part: Part) -> list[tuple[np.ndarray, np.ndarray]]:
+    boxes = []
+    bounds = part.bounds()
+    if bounds is not None:
+        boxes.append((np.asarray(bounds[0]), np.asarray(bounds[1])))
+    for c in part.colliders():
+        half = np.asarray(c.half_extents())
+        boxes.append((np.asarray(c.pos) - half, np.asarray(c.pos) + half))
+    return boxes
+
+
+def _check_clearance(asset_id: str, parts: Sequence[Part]) -> None:
+    boxes = [box for part in parts for box in _part_boxes(part)]
+    for part in parts:
+        for surface in part.surfaces():
+            xy = np.asarray(surface.polygon)
+            (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
+            h = surface.height
+            for low, high in boxes:
+                if (
+                    high[2] > h + PROUD
+                    and low[2] < h + CLEARANCE
+                    and low[0] < x1 - 1e-6
+                    and high[0] > x0 + 1e-6
+                    and low[1] < y1 - 1e-6
+                    and high[1] > y0 + 1e-6
+                ):
+                    raise ValueError(
+                        f"{asset_id}: the surface at z = {h:.3f} has a part within "
+                        f"{CLEARANCE} m above it ({np.round(low, 3)}..{np.round(high, 3)})"
+                    )
 
 
 def _collision_part(collider: Collider) -> CollisionPart:

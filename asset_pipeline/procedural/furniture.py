@@ -1,340 +1,585 @@
-"""Designs of beds, sofas, chairs, tables and desks (depth along X, width along Y, front +X)."""
+"""Generators of beds, sofas, chairs, tables and desks (depth along X, width along Y, front +X).
+
+Every generator takes the bounding box ``(d, w, h)`` and a style generator and fills exactly
+``[-d/2, d/2] x [-w/2, w/2] x [0, h]``.
+"""
 
 from __future__ import annotations
 
-from asset_pipeline.procedural.assembly import AssetDesign
+import numpy as np
+
 from asset_pipeline.procedural.kit import (
-    BEIGE_FABRIC,
+    BLACK_LEATHER,
     BLACK_METAL,
-    BLUE_FABRIC,
+    BRASS,
+    CASE_FINISHES,
     CHROME,
-    GREEN_FABRIC,
+    FABRICS,
     GREY_FABRIC,
+    LEATHER,
     LINEN,
-    OAK,
-    PINE,
-    WALNUT,
-    WHITE_LACQUER,
+    WOODS,
     block,
+    chance,
+    clamp,
     drawer_fronts,
+    pick,
     round_legs,
     square_legs,
+    uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part
+from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder
 
-FLOOR = ("floor",)
+Rng = np.random.Generator
+WHITE_CHAIR = Material("white_chair", (0.93, 0.92, 0.90, 1.0), 0.3, 0.4, "white painted")
 
 
-def bed(
-    asset_id: str,
-    description: str,
-    length: float,
-    width: float,
-    mass_kg: float,
-    headboard_height: float,
-    frame: Material,
-    headboard: Material,
-) -> AssetDesign:
-    """A bed on four legs with a mattress, pillows and a headboard at -X."""
-    half_l, half_w = 0.5 * length, 0.5 * width
-    leg_h, frame_top, mattress_top = 0.1, 0.32, 0.56
-    parts: list[Part] = list(square_legs(length, width, leg_h, 0.07, frame))
-    parts.append(block((-half_l, half_l), (-half_w, half_w), (leg_h, frame_top), frame))
-    parts.append(
-        block((-half_l - 0.05, -half_l), (-half_w, half_w), (0.0, headboard_height), headboard)
-    )
-    pillow_front = -half_l + 0.42
+# --- beds ------------------------------------------------------------------------------------
+@category(
+    "bed",
+    "furniture",
+    size=(2.1, 1.6, 1.0),
+    low=(1.8, 0.8, 0.7),
+    high=(2.4, 2.2, 1.4),
+    mass=60.0,
+    description="a {width} bed with a {frame} frame, a {headboard} headboard and {pillows}",
+    variants=(None, (2.05, 0.95, 0.9)),
+)
+def bed(size: Vec3, rng: Rng) -> Design:
+    """A bed: headboard at -X, frame on legs, mattress (a surface past the pillows), pillows."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    frame = pick(rng, WOODS)
+    headboard = frame if chance(rng, 0.5) else pick(rng, FABRICS)
+    hb_t = uniform(rng, 0.04, 0.08)
+    mattress_top = min(uniform(rng, 0.5, 0.6), h - 0.15)
+    thickness = uniform(rng, 0.18, 0.26)
+    frame_top = mattress_top - thickness
+    leg_h = min(uniform(rng, 0.06, 0.16), frame_top - 0.08)
+    x0 = -hd + hb_t
+    parts: list[Part] = [block((-hd, x0), (-hw, hw), (0.0, h), headboard)]
+    foot_t = uniform(rng, 0.03, 0.05) if chance(rng, 0.5) else 0.0
+    x1 = hd - foot_t
+    if foot_t:
+        parts.append(block((x1, hd), (-hw, hw), (0.0, mattress_top - 0.06), frame))
+    parts += [
+        p.translated((x0 + 0.5 * (x1 - x0), 0.0, 0.0))
+        for p in square_legs(x1 - x0, w, leg_h, 0.07, frame)
+    ]
+    parts.append(block((x0, x1), (-hw, hw), (leg_h, frame_top), frame))
+    pillow_front = x0 + uniform(rng, 0.36, 0.46)
     parts.append(
         block(
-            (-half_l + 0.02, half_l - 0.02),
-            (-half_w + 0.02, half_w - 0.02),
+            (x0 + 0.01, x1 - 0.01),
+            (-hw + 0.02, hw - 0.02),
             (frame_top, mattress_top),
             LINEN,
-            surface=(pillow_front + 0.02, half_l, -half_w, half_w),
+            surface=(pillow_front + 0.02, x1, -hw, hw),
         )
     )
-    pillows = 1 if width < 1.2 else 2
-    span = (width - 0.16) / pillows
+    pillows = 1 if w < 1.2 else 2
+    span = (w - 0.16) / pillows
+    pillow_h = min(uniform(rng, 0.1, 0.14), h - mattress_top - 0.01)
     for i in range(pillows):
-        y0 = -half_w + 0.08 + i * span
+        y0 = -hw + 0.08 + i * span
         parts.append(
             block(
-                (-half_l + 0.06, pillow_front),
+                (x0 + 0.05, pillow_front),
                 (y0 + 0.02, y0 + span - 0.02),
-                (mattress_top, mattress_top + 0.12),
+                (mattress_top, mattress_top + pillow_h),
                 LINEN,
             )
         )
-    return AssetDesign(asset_id, "bed", description, mass_kg, 0.8, FLOOR, tuple(parts))
+    words = {
+        "width": "single" if w < 1.2 else ("double" if w < 1.7 else "king-size"),
+        "frame": frame.words,
+        "headboard": headboard.words + (" upholstered" if headboard in FABRICS else ""),
+        "pillows": "one pillow" if pillows == 1 else "two pillows",
+    }
+    return Design(tuple(parts), words)
 
 
-def sofa(
-    asset_id: str,
-    description: str,
-    width: float,
-    depth: float,
-    seats: int,
-    mass_kg: float,
-    fabric: Material,
-    on_legs: bool,
-) -> AssetDesign:
-    """A sofa: base, back at -X, two arms and ``seats`` seat cushions (each a surface)."""
-    hd, hw = 0.5 * depth, 0.5 * width
-    base_z = 0.1 if on_legs else 0.06
-    seat_z, arm_w, back_d = 0.4, 0.15, 0.22
+@category(
+    "bunk_bed",
+    "furniture",
+    size=(2.05, 1.0, 1.65),
+    low=(1.9, 0.8, 1.4),
+    high=(2.2, 1.4, 1.9),
+    mass=70.0,
+    description="a {frame} bunk bed with two mattresses, guard rails and a ladder",
+    variants=(None, (2.0, 0.95, 1.55)),
+)
+def bunk_bed(size: Vec3, rng: Rng) -> Design:
+    """Two bunks between four corner posts; rails around the top bunk, a ladder on +Y."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    frame = pick(rng, WOODS + (BLACK_METAL,))
+    post = uniform(rng, 0.05, 0.07)
+    rail_t = 0.025
     parts: list[Part] = []
-    if on_legs:
-        parts += round_legs(depth, width, base_z, 0.025, BLACK_METAL, inset=0.06)
+    for x in ((-hd, -hd + post), (hd - post, hd)):
+        for y in ((-hw, -hw + post), (hw - post, hw)):
+            parts.append(block(x, y, (0.0, h), frame))
+    xi = (-hd + post, hd - post)
+    mattress_t = uniform(rng, 0.12, 0.16)
+    lower_frame = (0.12, 0.22)
+    upper_top = h - uniform(rng, 0.2, 0.26)  # top of the upper mattress
+    upper_frame = (upper_top - mattress_t - 0.1, upper_top - mattress_t)
+    ladder_x = (hd - post - 0.42, hd - post)
+    for z0, z1 in (lower_frame, upper_frame):
+        parts.append(block(xi, (-hw, hw), (z0, z1), frame))
+    # lower mattress: clear of the ladder on +Y
+    parts.append(
+        block(
+            (xi[0] + 0.01, xi[1] - 0.01),
+            (-hw + 0.02, hw - 0.04),
+            (lower_frame[1], lower_frame[1] + mattress_t),
+            LINEN,
+            surface=True,
+        )
+    )
+    parts.append(
+        block(
+            (xi[0] + 0.01, xi[1] - 0.01),
+            (-hw + rail_t + 0.01, hw - rail_t - 0.01),
+            (upper_frame[1], upper_top),
+            LINEN,
+            surface=True,
+        )
+    )
+    rail_z = (upper_frame[1], h - 0.02)
+    parts.append(block(xi, (-hw, -hw + rail_t), rail_z, frame))
+    parts.append(block((xi[0], ladder_x[0]), (hw - rail_t, hw), rail_z, frame))
+    for x in ((ladder_x[0], ladder_x[0] + 0.03),):
+        parts.append(block(x, (hw - rail_t, hw), (0.0, upper_frame[0]), frame))
+    rungs = int((upper_frame[0] - 0.25) // 0.25) + 1
+    for i in range(rungs):
+        z = 0.3 + i * (upper_frame[0] - 0.3) / rungs
+        parts.append(
+            block((ladder_x[0] + 0.03, ladder_x[1]), (hw - rail_t, hw), (z, z + 0.03), frame)
+        )
+    return Design(tuple(parts), {"frame": frame.words})
+
+
+# --- seating ---------------------------------------------------------------------------------
+def _upholstered(size: Vec3, rng: Rng, seats: int) -> tuple[list[Part], dict[str, str]]:
+    """A sofa or an armchair: base, back at -X, two arms, ``seats`` seat cushions (surfaces)."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    fabric = pick(rng, FABRICS + (LEATHER,))
+    legs = pick(rng, ("metal legs", "wooden legs", "plinth"))
+    base_z = uniform(rng, 0.08, 0.16) if legs != "plinth" else uniform(rng, 0.04, 0.08)
+    seat_top = uniform(rng, 0.4, 0.46)
+    cushion = uniform(rng, 0.1, 0.14)
+    seat_z = seat_top - cushion
+    arm_w = clamp(uniform(rng, 0.1, 0.2), 0.08, 0.15 * w)
+    back_d = clamp(uniform(rng, 0.16, 0.24), 0.12, 0.3 * d)
+    arm_top = min(seat_top + uniform(rng, 0.14, 0.26), h - 0.05)
+    rolled = chance(rng, 0.4)
+    parts: list[Part] = []
+    if legs == "metal legs":
+        parts += round_legs(d, w, base_z, 0.022, BLACK_METAL, inset=0.06)
+    elif legs == "wooden legs":
+        parts += square_legs(d, w, base_z, 0.045, pick(rng, WOODS), inset=0.03)
     else:
-        parts.append(block((-hd + 0.03, hd - 0.03), (-hw + 0.03, hw - 0.03), (0.0, base_z), WALNUT))
+        parts.append(
+            block((-hd + 0.03, hd - 0.03), (-hw + 0.03, hw - 0.03), (0.0, base_z), pick(rng, WOODS))
+        )
     parts.append(block((-hd, hd), (-hw, hw), (base_z, seat_z), fabric))
-    parts.append(block((-hd, -hd + back_d), (-hw, hw), (seat_z, 0.86), fabric))
+    parts.append(block((-hd, -hd + back_d), (-hw, hw), (seat_z, h), fabric))
     for sign in (-1.0, 1.0):
         y = sorted((sign * hw, sign * (hw - arm_w)))
-        parts.append(block((-hd + back_d, hd), (y[0], y[1]), (seat_z, 0.62), fabric))
-    inner = width - 2 * arm_w
+        if rolled:
+            r = 0.5 * arm_w
+            parts.append(block((-hd + back_d, hd), (y[0], y[1]), (seat_z, arm_top - r), fabric))
+            parts.append(
+                Cylinder(
+                    (0.5 * back_d, 0.5 * (y[0] + y[1]), arm_top - r),
+                    r,
+                    0.5 * (d - back_d),
+                    fabric,
+                    axis="x",
+                )
+            )
+        else:
+            parts.append(block((-hd + back_d, hd), (y[0], y[1]), (seat_z, arm_top), fabric))
+    inner = w - 2 * arm_w
     for i in range(seats):
         y0 = -hw + arm_w + i * inner / seats
         parts.append(
             block(
                 (-hd + back_d, hd - 0.02),
                 (y0, y0 + inner / seats),
-                (seat_z, seat_z + 0.1),
+                (seat_z, seat_top),
                 fabric,
                 surface=True,
             )
         )
-    return AssetDesign(asset_id, "sofa", description, mass_kg, 0.9, FLOOR, tuple(parts))
+    words = {
+        "fabric": fabric.words if fabric is not LEATHER else "brown leather",
+        "legs": {"plinth": "a low wooden plinth", "metal legs": "black metal legs"}.get(
+            legs, "wooden legs"
+        ),
+        "arms": "rolled" if rolled else "square",
+        "seats": {1: "one", 2: "two", 3: "three", 4: "four"}[seats],
+    }
+    return parts, words
 
 
-def armchair() -> AssetDesign:
-    """An upholstered armchair on short wooden legs."""
-    d, w = 0.85, 0.85
-    parts: list[Part] = list(round_legs(d, w, 0.12, 0.022, WALNUT, inset=0.06))
-    parts.append(block((-0.425, 0.425), (-0.425, 0.425), (0.12, 0.4), GREEN_FABRIC))
-    parts.append(block((-0.425, -0.215), (-0.425, 0.425), (0.4, 0.95), GREEN_FABRIC))
-    parts.append(block((-0.215, 0.425), (-0.425, -0.3), (0.4, 0.65), GREEN_FABRIC))
-    parts.append(block((-0.215, 0.425), (0.3, 0.425), (0.4, 0.65), GREEN_FABRIC))
-    parts.append(block((-0.215, 0.41), (-0.3, 0.3), (0.4, 0.5), GREEN_FABRIC, surface=True))
-    return AssetDesign(
-        "armchair_01",
-        "armchair",
-        "a green upholstered armchair with wide arms on short walnut legs",
-        25.0,
-        0.9,
-        FLOOR,
-        tuple(parts),
-    )
+@category(
+    "sofa",
+    "furniture",
+    size=(0.9, 2.0, 0.85),
+    low=(0.7, 1.2, 0.65),
+    high=(1.1, 3.2, 1.05),
+    mass=50.0,
+    friction=0.9,
+    description="a {fabric} {seats}-seat sofa with {arms} arms on {legs}",
+    variants=(None, (0.85, 1.6, 0.8)),
+)
+def sofa(size: Vec3, rng: Rng) -> Design:
+    """A sofa with one seat cushion per ~65 cm of inner width."""
+    seats = int(clamp(round((size[1] - 0.3) / 0.65), 1, 4))
+    parts, words = _upholstered(size, rng, seats)
+    return Design(tuple(parts), words)
 
 
-def dining_chair() -> AssetDesign:
-    """A wooden dining chair; its rear legs rise into the back posts at -X."""
-    hw, leg = 0.225, 0.04
-    seat_bottom, seat_top = 0.43, 0.46
+@category(
+    "armchair",
+    "furniture",
+    size=(0.85, 0.85, 0.9),
+    low=(0.65, 0.6, 0.7),
+    high=(1.0, 1.1, 1.1),
+    mass=25.0,
+    friction=0.9,
+    description="a {fabric} upholstered armchair with {arms} arms on {legs}",
+    variants=(None, (0.8, 0.75, 0.95)),
+)
+def armchair(size: Vec3, rng: Rng) -> Design:
+    """An armchair: a one-seat sofa."""
+    parts, words = _upholstered(size, rng, 1)
+    return Design(tuple(parts), words)
+
+
+@category(
+    "dining_chair",
+    "furniture",
+    size=(0.45, 0.45, 0.9),
+    low=(0.4, 0.38, 0.75),
+    high=(0.6, 0.6, 1.1),
+    mass=5.0,
+    friction=0.6,
+    description="a {wood} dining chair with a {back} back{cushion}",
+    variants=(None, (0.5, 0.46, 0.95)),
+)
+def dining_chair(size: Vec3, rng: Rng) -> Design:
+    """A wooden chair; its rear legs rise into the back posts at -X."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    wood = pick(rng, WOODS + (WHITE_CHAIR,))
+    leg = uniform(rng, 0.032, 0.045)
+    seat_top = uniform(rng, 0.44, 0.48)
+    seat_t = uniform(rng, 0.025, 0.04)
+    cushion = pick(rng, FABRICS) if chance(rng, 0.4) else None
+    cushion_t = 0.03 if cushion else 0.0
+    seat_bottom = seat_top - seat_t - cushion_t
     parts: list[Part] = []
     for y in ((-hw, -hw + leg), (hw - leg, hw)):
-        parts.append(block((hw - leg, hw), y, (0.0, seat_bottom), OAK))  # front legs
-        parts.append(block((-hw, -hw + leg), y, (0.0, 0.9), OAK))  # rear legs and back posts
+        parts.append(block((hd - leg, hd), y, (0.0, seat_bottom), wood))
+        parts.append(block((-hd, -hd + leg), y, (0.0, h), wood))
+    seat_top_board = seat_bottom + seat_t
     parts.append(
-        block((-hw, hw), (-hw, hw), (seat_bottom, seat_top), OAK, surface=(-hw + leg, hw, -hw, hw))
-    )
-    parts.append(block((-hw + 0.008, -hw + 0.032), (-hw + leg, hw - leg), (0.62, 0.88), OAK))
-    return AssetDesign(
-        "dining_chair_01",
-        "dining_chair",
-        "a simple oak dining chair with a slatted back",
-        5.0,
-        0.6,
-        FLOOR,
-        tuple(parts),
-    )
-
-
-def office_chair() -> AssetDesign:
-    """A static office chair: cross base, gas column, padded seat and a backrest at -X."""
-    parts: list[Part] = [
-        block((-0.3, 0.3), (-0.03, 0.03), (0.0, 0.04), BLACK_METAL),
-        block((-0.03, 0.03), (-0.3, 0.3), (0.0, 0.04), BLACK_METAL),
-        Cylinder((0.0, 0.0, 0.24), 0.025, 0.2, CHROME),
-        block((-0.25, 0.25), (-0.25, 0.25), (0.44, 0.52), GREY_FABRIC, surface=True),
-        block((-0.29, -0.25), (-0.03, 0.03), (0.44, 0.64), BLACK_METAL),
-        block((-0.31, -0.25), (-0.23, 0.23), (0.62, 1.0), GREY_FABRIC),
-    ]
-    return AssetDesign(
-        "office_chair_01",
-        "office_chair",
-        "a grey fabric office chair with a chrome column and a black cross base",
-        12.0,
-        0.7,
-        FLOOR,
-        tuple(parts),
-    )
-
-
-def stool() -> AssetDesign:
-    """A round pine stool on four legs."""
-    parts: list[Part] = list(round_legs(0.34, 0.34, 0.43, 0.016, PINE, inset=0.09))
-    parts.append(Cylinder((0.0, 0.0, 0.445), 0.17, 0.015, PINE, surface=True))
-    return AssetDesign(
-        "stool_01", "stool", "a round pine stool with four legs", 3.0, 0.6, FLOOR, tuple(parts)
-    )
-
-
-def rectangular_table(
-    asset_id: str,
-    category: str,
-    description: str,
-    size: tuple[float, float, float],
-    mass_kg: float,
-    top: Material,
-    legs: Material,
-    leg_side: float = 0.06,
-    leg_inset: float = 0.04,
-    shelf: bool = False,
-) -> AssetDesign:
-    """A table top on four square legs, optionally with a lower shelf between the legs."""
-    d, w, h = size
-    parts: list[Part] = list(square_legs(d, w, h - 0.04, leg_side, legs, inset=leg_inset))
-    parts.append(block((-0.5 * d, 0.5 * d), (-0.5 * w, 0.5 * w), (h - 0.04, h), top, surface=True))
-    if shelf:
-        outer_x = 0.5 * d - leg_inset
-        inner_y = 0.5 * w - leg_inset - leg_side
-        parts.append(
-            block((-outer_x, outer_x), (-inner_y, inner_y), (0.1, 0.12), top, surface=True)
+        block(
+            (-hd, hd),
+            (-hw, hw),
+            (seat_bottom, seat_top_board),
+            wood,
+            surface=False if cushion else (-hd + leg, hd, -hw, hw),
         )
-    return AssetDesign(asset_id, category, description, mass_kg, 0.6, FLOOR, tuple(parts))
-
-
-def round_dining_table() -> AssetDesign:
-    """A round pedestal table."""
-    parts: list[Part] = [
-        Cylinder((0.0, 0.0, 0.02), 0.3, 0.02, BLACK_METAL),
-        Cylinder((0.0, 0.0, 0.38), 0.05, 0.34, BLACK_METAL),
-        Cylinder((0.0, 0.0, 0.735), 0.55, 0.015, WALNUT, surface=True),
-    ]
-    return AssetDesign(
-        "dining_table_02",
-        "dining_table",
-        "a round walnut pedestal dining table for four",
-        28.0,
-        0.6,
-        FLOOR,
-        tuple(parts),
     )
+    if cushion:
+        parts.append(
+            block(
+                (-hd + leg + 0.01, hd - 0.01),
+                (-hw + 0.02, hw - 0.02),
+                (seat_top_board, seat_top),
+                cushion,
+                surface=True,
+            )
+        )
+    back = pick(rng, ("slatted", "solid", "ladder"))
+    x_back = (-hd + 0.006, -hd + leg - 0.006)
+    y_in = (-hw + leg, hw - leg)
+    back_low = seat_top + 0.12
+    if back == "solid":
+        parts.append(block(x_back, y_in, (back_low, h - 0.02), wood))
+    elif back == "slatted":
+        parts.append(block(x_back, y_in, (h - 0.08, h - 0.02), wood))
+        slats = 3 if w < 0.5 else 4
+        pitch = (y_in[1] - y_in[0]) / (slats + 1)
+        for i in range(1, slats + 1):
+            yc = y_in[0] + i * pitch
+            parts.append(block(x_back, (yc - 0.012, yc + 0.012), (back_low, h - 0.08), wood))
+    else:
+        rails = 3
+        pitch = (h - 0.02 - back_low) / rails
+        for i in range(rails):
+            z1 = h - 0.02 - i * pitch
+            parts.append(block(x_back, y_in, (z1 - 0.05, z1), wood))
+    words = {
+        "wood": wood.words,
+        "back": back,
+        "cushion": f" and a {cushion.words} seat cushion" if cushion else "",
+    }
+    return Design(tuple(parts), words)
 
 
-def desk_with_drawers() -> AssetDesign:
-    """A desk with a three-drawer pedestal on its right (+Y) and two legs on its left."""
+@category(
+    "office_chair",
+    "furniture",
+    size=(0.62, 0.6, 1.0),
+    low=(0.5, 0.5, 0.85),
+    high=(0.75, 0.75, 1.3),
+    mass=12.0,
+    friction=0.7,
+    description="a {fabric} office chair with a {metal} column{arms} on a cross base",
+    variants=(None, (0.66, 0.66, 1.15)),
+)
+def office_chair(size: Vec3, rng: Rng) -> Design:
+    """A static office chair: cross base, gas column, padded seat, backrest at -X."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    fabric = pick(rng, (GREY_FABRIC, BLACK_LEATHER, *FABRICS[1:3]))
+    metal = pick(rng, (CHROME, BLACK_METAL))
+    back_t = uniform(rng, 0.05, 0.08)
+    gap = 0.02
+    sx = (-hd + back_t + gap, hd)
+    cx = 0.5 * (sx[0] + sx[1])
+    seat_top = uniform(rng, 0.46, 0.52)
+    seat_t = uniform(rng, 0.07, 0.1)
+    arms = chance(rng, 0.5)
+    arm_w = 0.05 if arms else 0.0
+    seat_y = (-hw + arm_w + (0.01 if arms else 0.0), hw - arm_w - (0.01 if arms else 0.0))
+    reach = 0.5 * (sx[1] - sx[0])
     parts: list[Part] = [
-        block((-0.3, 0.3), (-0.6, 0.6), (0.72, 0.75), WALNUT, surface=True),
-        block((-0.28, 0.26), (0.18, 0.58), (0.0, 0.72), WALNUT),
-        block((-0.28, -0.23), (-0.58, -0.53), (0.0, 0.72), WALNUT),
-        block((0.21, 0.26), (-0.58, -0.53), (0.0, 0.72), WALNUT),
-    ]
-    parts += drawer_fronts(0.26, (0.18, 0.58), (0.02, 0.7), 3, 1, WALNUT, BLACK_METAL)
-    return AssetDesign(
-        "desk_02",
-        "desk",
-        "a walnut writing desk with a three-drawer pedestal",
-        35.0,
-        0.6,
-        FLOOR,
-        tuple(parts),
-    )
-
-
-def designs() -> list[AssetDesign]:
-    """All designs of this module."""
-    return [
-        bed(
-            "bed_single_01",
-            "a single bed with an oak frame, a white mattress and a pillow",
-            2.0,
-            0.95,
-            40.0,
-            0.95,
-            OAK,
-            OAK,
-        ),
-        bed(
-            "bed_double_01",
-            "a double bed with an upholstered beige headboard and two pillows",
-            2.1,
-            1.6,
-            65.0,
-            1.1,
-            WALNUT,
-            BEIGE_FABRIC,
-        ),
-        sofa(
-            "sofa_01",
-            "a grey two-seat fabric sofa on black metal legs",
-            1.6,
-            0.9,
-            2,
-            45.0,
-            GREY_FABRIC,
-            on_legs=True,
-        ),
-        sofa(
-            "sofa_02",
-            "a blue three-seat sofa on a low wooden plinth",
-            2.2,
-            0.95,
-            3,
-            60.0,
-            BLUE_FABRIC,
-            on_legs=False,
-        ),
-        armchair(),
-        dining_chair(),
-        office_chair(),
-        stool(),
-        rectangular_table(
-            "dining_table_01",
-            "dining_table",
-            "a rectangular oak dining table for six",
-            (0.9, 1.8, 0.75),
-            35.0,
-            OAK,
-            OAK,
-            leg_side=0.07,
-        ),
-        round_dining_table(),
-        rectangular_table(
-            "coffee_table_01",
-            "coffee_table",
-            "a low walnut coffee table with a lower shelf",
-            (0.6, 1.1, 0.42),
-            15.0,
-            WALNUT,
-            WALNUT,
-            leg_side=0.05,
-            leg_inset=0.02,
-            shelf=True,
-        ),
-        rectangular_table(
-            "side_table_01",
-            "side_table",
-            "a small square oak side table",
-            (0.45, 0.45, 0.55),
-            6.0,
-            OAK,
-            OAK,
-            leg_side=0.035,
-            leg_inset=0.03,
-        ),
-        rectangular_table(
-            "desk_01",
-            "desk",
-            "a white office desk on black metal legs",
-            (0.7, 1.4, 0.75),
-            25.0,
-            WHITE_LACQUER,
+        block((cx - reach, cx + reach), (-0.03, 0.03), (0.0, 0.04), BLACK_METAL),
+        block(
+            (cx - 0.03, cx + 0.03),
+            (-min(hw, reach + 0.05), min(hw, reach + 0.05)),
+            (0.0, 0.04),
             BLACK_METAL,
-            leg_side=0.05,
-            leg_inset=0.02,
         ),
-        desk_with_drawers(),
+        Cylinder(
+            (cx, 0.0, 0.5 * (0.04 + seat_top - seat_t)),
+            0.025,
+            0.5 * (seat_top - seat_t - 0.04),
+            metal,
+        ),
+        block(sx, seat_y, (seat_top - seat_t, seat_top), fabric, surface=True),
+        block(
+            (-hd + back_t, sx[0] + 0.015),
+            (-0.03, 0.03),
+            (seat_top - seat_t, seat_top + 0.15),
+            BLACK_METAL,
+        ),
+        block(
+            (-hd, -hd + back_t),
+            (-min(hw, 0.5 * w - 0.02), min(hw, 0.5 * w - 0.02)),
+            (seat_top + 0.12, h),
+            fabric,
+        ),
     ]
+    if arms:
+        arm_top = seat_top + uniform(rng, 0.18, 0.24)
+        for y in ((-hw, -hw + arm_w), (hw - arm_w, hw)):
+            ym = 0.5 * (y[0] + y[1])
+            parts.append(
+                block(
+                    (cx - 0.02, cx + 0.02),
+                    (ym - 0.012, ym + 0.012),
+                    (seat_top - seat_t, arm_top - 0.03),
+                    BLACK_METAL,
+                )
+            )
+            parts.append(block((cx - 0.14, cx + 0.12), y, (arm_top - 0.03, arm_top), BLACK_METAL))
+    words = {"fabric": fabric.words, "metal": metal.words, "arms": " and armrests" if arms else ""}
+    return Design(tuple(parts), words)
+
+
+@category(
+    "stool",
+    "furniture",
+    size=(0.34, 0.34, 0.46),
+    low=(0.28, 0.28, 0.4),
+    high=(0.5, 0.5, 0.85),
+    mass=3.0,
+    friction=0.6,
+    description="a {shape} {wood} stool with four legs{footrest}",
+    variants=(None, (0.38, 0.38, 0.75)),
+)
+def stool(size: Vec3, rng: Rng) -> Design:
+    """A stool: four legs, a square or (for a square footprint) round seat, a footrest if tall."""
+    d, w, h = size
+    wood = pick(rng, WOODS + (BLACK_METAL,))
+    seat_t = uniform(rng, 0.025, 0.04)
+    leg_top = h - seat_t
+    round_seat = abs(d - w) < 1e-3 and chance(rng, 0.6)
+    parts: list[Part] = []
+    if round_seat:
+        r = 0.5 * d
+        inset = 0.45 * r
+        parts += round_legs(d, w, leg_top, 0.016, wood, inset=inset)
+        parts.append(Cylinder((0.0, 0.0, h - 0.5 * seat_t), r, 0.5 * seat_t, wood, surface=True))
+        reach = 0.5 * d - inset
+    else:
+        inset = uniform(rng, 0.02, 0.05)
+        parts += square_legs(d, w, leg_top, 0.032, wood, inset=inset)
+        parts.append(
+            block((-0.5 * d, 0.5 * d), (-0.5 * w, 0.5 * w), (leg_top, h), wood, surface=True)
+        )
+        reach = 0.5 * d - inset - 0.016
+    footrest = h > 0.6
+    if footrest:
+        z = 0.3 * h
+        for sign in (-1.0, 1.0):
+            y = sign * (0.5 * w - inset - (0.0 if round_seat else 0.016))
+            parts.append(block((-reach, reach), (y - 0.01, y + 0.01), (z, z + 0.02), wood))
+    words = {
+        "shape": "round" if round_seat else "square",
+        "wood": wood.words,
+        "footrest": " and footrests" if footrest else "",
+    }
+    return Design(tuple(parts), words)
+
+
+# --- tables and desks ------------------------------------------------------------------------
+def _table(
+    size: Vec3, rng: Rng, *, shelf_chance: float, allow_round: bool
+) -> tuple[list[Part], dict[str, str]]:
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    top_mat = pick(rng, CASE_FINISHES)
+    leg_mat = top_mat if chance(rng, 0.6) else pick(rng, (BLACK_METAL, *WOODS))
+    t = uniform(rng, 0.02, 0.045)
+    parts: list[Part] = []
+    if allow_round and abs(d - w) < 1e-3 and chance(rng, 0.6):
+        r = hd
+        base_r = min(0.6 * r, 0.3)
+        parts.append(Cylinder((0.0, 0.0, 0.02), base_r, 0.02, leg_mat))
+        parts.append(
+            Cylinder((0.0, 0.0, 0.5 * (h - t + 0.04)), 0.05, 0.5 * (h - t - 0.04), leg_mat)
+        )
+        parts.append(Cylinder((0.0, 0.0, h - 0.5 * t), r, 0.5 * t, top_mat, surface=True))
+        return parts, {"top": top_mat.words, "shape": "round", "legs": "a pedestal", "shelf": ""}
+    legs = pick(rng, ("square legs", "round legs", "panel legs"))
+    inset = uniform(rng, 0.0, min(0.06, 0.1 * d))
+    side = clamp(uniform(rng, 0.035, 0.07), 0.03, 0.12 * min(d, w))
+    leg_h = h - t
+    if legs == "square legs":
+        parts += square_legs(d, w, leg_h, side, leg_mat, inset=inset)
+    elif legs == "round legs":
+        parts += round_legs(d, w, leg_h, 0.5 * side, leg_mat, inset=inset + 0.5 * side)
+    else:
+        for y in ((-hw + inset, -hw + inset + side), (hw - inset - side, hw - inset)):
+            parts.append(block((-hd + inset, hd - inset), y, (0.0, leg_h), leg_mat))
+    parts.append(block((-hd, hd), (-hw, hw), (leg_h, h), top_mat, surface=True))
+    shelf = chance(rng, shelf_chance) and h > 0.3
+    if shelf:
+        x_in = hd - inset - (side if legs == "square legs" else 0.0) - 0.002
+        y_in = hw - inset - side - 0.002
+        z = min(0.12, 0.3 * h)
+        parts.append(block((-x_in, x_in), (-y_in, y_in), (z - 0.02, z), top_mat, surface=True))
+    return parts, {
+        "top": top_mat.words,
+        "shape": "square" if abs(d - w) < 1e-3 else "rectangular",
+        "legs": legs if leg_mat is top_mat else f"{leg_mat.words} {legs}",
+        "shelf": " and a lower shelf" if shelf else "",
+    }
+
+
+@category(
+    "coffee_table",
+    "furniture",
+    size=(0.6, 1.1, 0.42),
+    low=(0.4, 0.4, 0.3),
+    high=(1.0, 1.6, 0.55),
+    mass=15.0,
+    friction=0.6,
+    description="a low {shape} {top} coffee table on {legs}{shelf}",
+    variants=(None, (0.8, 0.8, 0.4)),
+)
+def coffee_table(size: Vec3, rng: Rng) -> Design:
+    """A low table, often with a lower shelf."""
+    parts, words = _table(size, rng, shelf_chance=0.5, allow_round=True)
+    return Design(tuple(parts), words)
+
+
+@category(
+    "side_table",
+    "furniture",
+    size=(0.45, 0.45, 0.55),
+    low=(0.3, 0.3, 0.4),
+    high=(0.7, 0.7, 0.8),
+    mass=6.0,
+    friction=0.6,
+    description="a small {shape} {top} side table on {legs}{shelf}",
+    variants=(None, (0.4, 0.5, 0.6)),
+)
+def side_table(size: Vec3, rng: Rng) -> Design:
+    """A small table beside a sofa or a bed."""
+    parts, words = _table(size, rng, shelf_chance=0.3, allow_round=True)
+    return Design(tuple(parts), words)
+
+
+@category(
+    "dining_table",
+    "furniture",
+    size=(0.9, 1.6, 0.75),
+    low=(0.7, 0.7, 0.7),
+    high=(1.2, 2.6, 0.8),
+    mass=35.0,
+    friction=0.6,
+    description="a {shape} {top} dining table on {legs}",
+    variants=(None, (1.1, 1.1, 0.75)),
+)
+def dining_table(size: Vec3, rng: Rng) -> Design:
+    """A dining table: four legs, panel legs, or (square footprint) a round pedestal table."""
+    parts, words = _table(size, rng, shelf_chance=0.0, allow_round=True)
+    return Design(tuple(parts), words)
+
+
+@category(
+    "desk",
+    "furniture",
+    size=(0.7, 1.4, 0.75),
+    low=(0.5, 0.8, 0.7),
+    high=(0.9, 2.0, 0.8),
+    mass=30.0,
+    friction=0.6,
+    description="a {top} desk {style}",
+    variants=(None, (0.6, 1.2, 0.75)),
+)
+def desk(size: Vec3, rng: Rng) -> Design:
+    """A desk on legs or with a drawer pedestal on its right (+Y) and panel legs."""
+    d, w, h = size
+    if chance(rng, 0.4):
+        parts, words = _table(size, rng, shelf_chance=0.0, allow_round=False)
+        return Design(tuple(parts), {"top": words["top"], "style": f"on {words['legs']}"})
+    hd, hw = 0.5 * d, 0.5 * w
+    mat = pick(rng, CASE_FINISHES)
+    handle = pick(rng, (BLACK_METAL, CHROME, BRASS))
+    t = uniform(rng, 0.025, 0.04)
+    drawers = int(rng.integers(2, 5))
+    ped_w = clamp(uniform(rng, 0.38, 0.45), 0.3, 0.35 * w)
+    face = hd - 0.05 - 0.036
+    parts: list[Part] = [
+        block((-hd, hd), (-hw, hw), (h - t, h), mat, surface=True),
+        block((-hd + 0.02, face), (hw - 0.02 - ped_w, hw - 0.02), (0.0, h - t), mat),
+        block((-hd + 0.02, hd - 0.05), (-hw + 0.02, -hw + 0.05), (0.0, h - t), mat),
+    ]
+    parts += drawer_fronts(
+        face, (hw - 0.02 - ped_w, hw - 0.02), (0.02, h - t - 0.01), drawers, 1, mat, handle
+    )
+    return Design(tuple(parts), {"top": mat.words, "style": f"with a {drawers}-drawer pedestal"})

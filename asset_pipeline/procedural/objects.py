@@ -1,193 +1,619 @@
-"""Designs of small objects that rest on furniture (placement ``object``)."""
+"""Generators of small objects that rest on furniture (placement ``object``).
+
+Round objects (``yx_ratio=(1, 1)``) take x = y = diameter.
+"""
 
 from __future__ import annotations
 
-from asset_pipeline.procedural.assembly import AssetDesign
+import numpy as np
+
 from asset_pipeline.procedural.kit import (
     ALUMINIUM,
+    AMBER_GLASS,
+    APPLE_GREEN,
     APPLE_RED,
     BLACK_METAL,
+    BLACK_PLASTIC,
+    BRASS,
     CARDBOARD,
-    CERAMIC_BLUE,
+    CERAMICS,
+    CHROME,
+    CLEAR_GLASS,
+    COVERS,
+    DARK_FOLIAGE,
     FOLIAGE,
     GREEN_GLASS,
     LAMP_SHADE,
+    ORANGE_PEEL,
     PAPER,
     PORCELAIN,
-    RED_COVER,
+    RED_WAX,
     SCREEN,
     SOIL,
+    SPACE_GREY,
+    STEEL,
     STEM,
     TAPE,
     TERRACOTTA,
-    TOY_RED,
+    TOYS,
+    WAX,
+    WHITE_PLASTIC,
+    WHITE_SHADE,
+    WICK,
+    WOODS,
     block,
+    chance,
+    clamp,
+    pick,
+    uniform,
 )
-from asset_pipeline.procedural.parts import Part
+from asset_pipeline.procedural.parts import Part, Vec3
+from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe, Sphere
 
+Rng = np.random.Generator
 OBJECT = ("object",)
+ROUND = (1.0, 1.0)
 
 
-def mug() -> AssetDesign:
-    """A porcelain mug with a handle on its +Y side."""
+@category(
+    "book",
+    "object",
+    size=(0.23, 0.16, 0.03),
+    low=(0.1, 0.08, 0.008),
+    high=(0.35, 0.28, 0.08),
+    mass=0.5,
+    friction=0.6,
+    placement=OBJECT,
+    description="a {cover} {binding} book lying flat",
+    variants=(None, (0.2, 0.13, 0.02)),
+)
+def book(size: Vec3, rng: Rng) -> Design:
+    """A book lying flat, spine at -Y; its top cover is a surface (books stack)."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    cover = pick(rng, COVERS)
+    hard = chance(rng, 0.6)
+    c = min(0.003 if hard else 0.001, 0.15 * h)
     parts: list[Part] = [
-        Lathe((0.0, 0.0, 0.0), ((0.04, 0.0), (0.041, 0.095)), PORCELAIN, hollow=(0.005, 0.008)),
-        block((-0.006, 0.006), (0.038, 0.066), (0.07, 0.08), PORCELAIN),
-        block((-0.006, 0.006), (0.038, 0.066), (0.02, 0.03), PORCELAIN),
-        block((-0.006, 0.006), (0.056, 0.066), (0.03, 0.07), PORCELAIN),
+        block((-hd, hd), (-hw, hw), (0.0, c), cover),
+        block((-hd, hd), (-hw, hw), (h - c, h), cover, surface=w > 0.06),
+        block((-hd, hd), (-hw, -hw + c), (c, h - c), cover),
+        block((-hd + c, hd - c), (-hw + c, hw - c), (c, h - c), PAPER),
     ]
-    return AssetDesign(
-        "mug_01", "mug", "a white porcelain coffee mug", 0.3, 0.6, OBJECT, tuple(parts)
+    return Design(
+        tuple(parts), {"cover": cover.words, "binding": "hardback" if hard else "paperback"}
     )
 
 
-def book() -> AssetDesign:
-    """A hardback book lying flat, spine at -Y."""
+@category(
+    "cardboard_box",
+    "object",
+    size=(0.4, 0.3, 0.25),
+    low=(0.1, 0.1, 0.06),
+    high=(0.8, 0.8, 0.7),
+    mass=0.8,
+    friction=0.7,
+    placement=("floor", "object"),
+    description="a closed {material} box sealed with tape",
+    variants=(None, (0.3, 0.3, 0.3)),
+)
+def cardboard_box(size: Vec3, rng: Rng) -> Design:
+    """A closed, taped carton; its top is a surface."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    tape_w = clamp(0.15 * w, 0.02, 0.05)
     parts: list[Part] = [
-        block((-0.115, 0.115), (-0.08, 0.08), (0.0, 0.003), RED_COVER),
-        block((-0.115, 0.115), (-0.08, 0.08), (0.027, 0.03), RED_COVER, surface=True),
-        block((-0.115, 0.115), (-0.08, -0.077), (0.003, 0.027), RED_COVER),
-        block((-0.112, 0.112), (-0.077, 0.078), (0.003, 0.027), PAPER),
+        block((-hd, hd), (-hw, hw), (0.0, h - 0.0005), CARDBOARD, surface=True),
+        block((-hd, hd), (-0.5 * tape_w, 0.5 * tape_w), (h - 0.0005, h), TAPE, collide=False),
     ]
-    return AssetDesign(
-        "book_01", "book", "a red hardback book lying flat", 0.5, 0.6, OBJECT, tuple(parts)
-    )
+    return Design(tuple(parts), {"material": CARDBOARD.words})
 
 
-def bowl() -> AssetDesign:
-    """A flared ceramic bowl."""
-    profile = ((0.045, 0.0), (0.06, 0.02), (0.08, 0.065))
-    parts: list[Part] = [Lathe((0.0, 0.0, 0.0), profile, CERAMIC_BLUE, hollow=(0.004, 0.006))]
-    return AssetDesign(
-        "bowl_01", "bowl", "a blue ceramic cereal bowl", 0.35, 0.6, OBJECT, tuple(parts)
-    )
-
-
-def plate() -> AssetDesign:
-    """A dinner plate with a shallow well."""
-    profile = ((0.075, 0.0), (0.09, 0.008), (0.13, 0.02))
-    parts: list[Part] = [Lathe((0.0, 0.0, 0.0), profile, PORCELAIN, hollow=(0.004, 0.008))]
-    return AssetDesign(
-        "plate_01", "plate", "a round white porcelain dinner plate", 0.45, 0.6, OBJECT, tuple(parts)
-    )
-
-
-def bottle() -> AssetDesign:
-    """A glass wine bottle."""
-    profile = ((0.036, 0.0), (0.036, 0.2), (0.014, 0.25), (0.013, 0.29), (0.015, 0.3))
-    parts: list[Part] = [Lathe((0.0, 0.0, 0.0), profile, GREEN_GLASS)]
-    return AssetDesign(
-        "bottle_01", "bottle", "a full green glass wine bottle", 1.3, 0.5, OBJECT, tuple(parts)
-    )
-
-
-def laptop() -> AssetDesign:
-    """An open laptop; its screen faces +X, the lid hinges at -X."""
+@category(
+    "mug",
+    "object",
+    size=(0.082, 0.112, 0.095),
+    low=(0.06, 0.075, 0.07),
+    high=(0.11, 0.16, 0.13),
+    mass=0.3,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=(1.2, 1.45),
+    description="a {ceramic} mug with a {handle} handle",
+    variants=(None, (0.09, 0.12, 0.11)),
+)
+def mug(size: Vec3, rng: Rng) -> Design:
+    """A mug (diameter x) with a handle on +Y reaching to the width y."""
+    d, w, h = size
+    r = 0.5 * d
+    ceramic = pick(rng, CERAMICS)
+    taper = uniform(rng, 0.9, 1.0) if chance(rng, 0.4) else 1.0
+    reach = w - d  # handle beyond the body
+    t = clamp(uniform(rng, 0.008, 0.012), 0.006, 0.3 * reach)
+    y0, y1 = r - 0.004, r + reach
+    z0, z1 = 0.22 * h, 0.82 * h
     parts: list[Part] = [
-        block((-0.12, 0.12), (-0.17, 0.17), (0.0, 0.018), ALUMINIUM),
-        block((-0.1, 0.04), (-0.15, 0.15), (0.018, 0.019), BLACK_METAL, collide=False),
-        block((-0.128, -0.12), (-0.17, 0.17), (0.0, 0.23), ALUMINIUM),
-        block((-0.12, -0.119), (-0.16, 0.16), (0.03, 0.22), SCREEN, collide=False),
+        Lathe((0.0, 0.0, 0.0), ((r * taper, 0.0), (r, h)), ceramic, hollow=(0.005, 0.008)),
+        block((-0.006, 0.006), (y0, y1), (z1 - t, z1), ceramic),
+        block((-0.006, 0.006), (y0, y1), (z0, z0 + t), ceramic),
+        block((-0.006, 0.006), (y1 - t, y1), (z0 + t, z1 - t), ceramic),
     ]
-    return AssetDesign(
-        "laptop_01", "laptop", "an open silver laptop", 1.8, 0.6, OBJECT, tuple(parts)
+    return Design(
+        tuple(parts), {"ceramic": ceramic.words, "handle": "square" if t > 0.01 else "slim"}
     )
 
 
-def vase() -> AssetDesign:
-    """A bulbous ceramic vase with a narrow neck."""
-    profile = ((0.05, 0.0), (0.075, 0.1), (0.06, 0.2), (0.035, 0.27), (0.045, 0.3))
-    parts: list[Part] = [Lathe((0.0, 0.0, 0.0), profile, CERAMIC_BLUE)]
-    return AssetDesign(
-        "vase_01", "vase", "a blue ceramic vase with a narrow neck", 1.0, 0.6, OBJECT, tuple(parts)
-    )
-
-
-def cardboard_box() -> AssetDesign:
-    """A closed, taped cardboard box."""
+@category(
+    "cup",
+    "object",
+    size=(0.075, 0.075, 0.1),
+    low=(0.05, 0.05, 0.06),
+    high=(0.1, 0.1, 0.16),
+    mass=0.22,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    description="a {material} tumbler",
+)
+def cup(size: Vec3, rng: Rng) -> Design:
+    """A tapered drinking glass or beaker."""
+    d, _, h = size
+    r = 0.5 * d
+    material = pick(rng, (CLEAR_GLASS, *CERAMICS[:3], WHITE_PLASTIC))
     parts: list[Part] = [
-        block((-0.2, 0.2), (-0.15, 0.15), (0.0, 0.25), CARDBOARD, surface=True),
-        block((-0.2, 0.2), (-0.025, 0.025), (0.25, 0.2505), TAPE, collide=False),
+        Lathe(
+            (0.0, 0.0, 0.0),
+            ((r * uniform(rng, 0.72, 0.9), 0.0), (r, h)),
+            material,
+            hollow=(0.003, 0.006),
+        )
     ]
-    return AssetDesign(
-        "cardboard_box_01",
-        "cardboard_box",
-        "a closed brown cardboard box sealed with tape",
-        0.8,
-        0.7,
-        ("floor", "object"),
-        tuple(parts),
+    return Design(tuple(parts), {"material": material.words})
+
+
+@category(
+    "bowl",
+    "object",
+    size=(0.16, 0.16, 0.065),
+    low=(0.1, 0.1, 0.04),
+    high=(0.32, 0.32, 0.14),
+    mass=0.35,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    description="a {ceramic} bowl",
+    variants=(None, (0.24, 0.24, 0.09)),
+)
+def bowl(size: Vec3, rng: Rng) -> Design:
+    """A flared bowl on a foot."""
+    d, _, h = size
+    r = 0.5 * d
+    ceramic = pick(rng, CERAMICS)
+    foot = uniform(rng, 0.5, 0.62) * r
+    profile = ((foot, 0.0), (uniform(rng, 0.7, 0.8) * r, 0.3 * h), (r, h))
+    return Design(
+        (Lathe((0.0, 0.0, 0.0), profile, ceramic, hollow=(0.004, 0.006)),),
+        {"ceramic": ceramic.words},
     )
 
 
-def apple() -> AssetDesign:
-    """A red apple with a slightly flattened base and a stem."""
+@category(
+    "plate",
+    "object",
+    size=(0.26, 0.26, 0.02),
+    low=(0.15, 0.15, 0.012),
+    high=(0.34, 0.34, 0.035),
+    mass=0.45,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    description="a round {ceramic} plate",
+    variants=(None, (0.2, 0.2, 0.018)),
+)
+def plate(size: Vec3, rng: Rng) -> Design:
+    """A plate with a shallow well."""
+    d, _, h = size
+    r = 0.5 * d
+    ceramic = pick(rng, (PORCELAIN, *CERAMICS))
+    foot = uniform(rng, 0.55, 0.62) * r
+    profile = ((foot, 0.0), (foot + 0.1 * r, 0.4 * h), (r, h))
+    return Design(
+        (Lathe((0.0, 0.0, 0.0), profile, ceramic, hollow=(0.004, 0.006)),),
+        {"ceramic": ceramic.words},
+    )
+
+
+@category(
+    "bottle",
+    "object",
+    size=(0.072, 0.072, 0.3),
+    low=(0.05, 0.05, 0.15),
+    high=(0.11, 0.11, 0.38),
+    mass=1.2,
+    friction=0.5,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    zx_ratio=(2.0, 7.0),
+    description="a {glass} bottle",
+    variants=(None, (0.065, 0.065, 0.22)),
+)
+def bottle(size: Vec3, rng: Rng) -> Design:
+    """A bottle: body, shoulder, neck, lip."""
+    d, _, h = size
+    r = 0.5 * d
+    glass = pick(rng, (GREEN_GLASS, AMBER_GLASS, CLEAR_GLASS))
+    body = uniform(rng, 0.55, 0.7) * h
+    neck_r = clamp(0.3 * r, 0.009, 0.5 * r)
+    profile = (
+        (r, 0.0),
+        (r, body),
+        (neck_r, body + 0.6 * (h - body) * uniform(rng, 0.5, 1.0)),
+        (neck_r, h - 0.01),
+        (neck_r * 1.15, h),
+    )
+    return Design((Lathe((0.0, 0.0, 0.0), profile, glass),), {"glass": glass.words})
+
+
+@category(
+    "vase",
+    "object",
+    size=(0.15, 0.15, 0.3),
+    low=(0.08, 0.08, 0.12),
+    high=(0.35, 0.35, 0.7),
+    mass=1.0,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    zx_ratio=(0.8, 5.0),
+    description="a {ceramic} {shape} vase",
+    variants=(None, (0.12, 0.12, 0.25)),
+)
+def vase(size: Vec3, rng: Rng) -> Design:
+    """A vase: a bulbous body with a narrow neck, or a straight cylinder."""
+    d, _, h = size
+    r = 0.5 * d
+    ceramic = pick(rng, CERAMICS)
+    if chance(rng, 0.6):
+        neck = uniform(rng, 0.45, 0.6) * r
+        profile = (
+            (0.7 * r, 0.0),
+            (r, 0.35 * h),
+            (0.8 * r, 0.65 * h),
+            (neck, 0.88 * h),
+            (1.2 * neck, h),
+        )
+        shape = "bulbous"
+    else:
+        profile = ((0.85 * r, 0.0), (r, h))
+        shape = "tall flared"
+    return Design(
+        (Lathe((0.0, 0.0, 0.0), profile, ceramic),), {"ceramic": ceramic.words, "shape": shape}
+    )
+
+
+@category(
+    "laptop",
+    "object",
+    size=(0.25, 0.34, 0.23),
+    low=(0.2, 0.28, 0.15),
+    high=(0.32, 0.42, 0.3),
+    mass=1.8,
+    friction=0.6,
+    placement=OBJECT,
+    description="an open {finish} laptop",
+    variants=(None, (0.22, 0.3, 0.2)),
+)
+def laptop(size: Vec3, rng: Rng) -> Design:
+    """An open laptop; the screen faces +X, the lid stands upright at -X."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    finish = pick(rng, (ALUMINIUM, SPACE_GREY, BLACK_PLASTIC))
+    t = uniform(rng, 0.012, 0.02)
+    lid = 0.007
     parts: list[Part] = [
-        Sphere((0.0, 0.0, 0.037), 0.04, APPLE_RED, cut=0.0),
-        Cylinder((0.0, 0.0, 0.081), 0.003, 0.006, STEM, collide=False),
+        block((-hd + lid, hd), (-hw, hw), (0.0, t), finish),
+        block(
+            (-hd + lid + 0.02, hd - 0.08),
+            (-hw + 0.02, hw - 0.02),
+            (t, t + 0.0008),
+            BLACK_PLASTIC,
+            collide=False,
+        ),
+        block((-hd, -hd + lid), (-hw, hw), (0.0, h), finish),
+        block(
+            (-hd + lid, -hd + lid + 0.0008),
+            (-hw + 0.01, hw - 0.01),
+            (t + 0.01, h - 0.01),
+            SCREEN,
+            collide=False,
+        ),
     ]
-    return AssetDesign("apple_01", "apple", "a red apple", 0.18, 0.7, OBJECT, tuple(parts))
+    return Design(tuple(parts), {"finish": finish.words})
 
 
-def small_potted_plant() -> AssetDesign:
-    """A small plant in a terracotta pot, for shelves and tables."""
+@category(
+    "desk_lamp",
+    "object",
+    size=(0.2, 0.16, 0.4),
+    low=(0.15, 0.1, 0.28),
+    high=(0.35, 0.3, 0.7),
+    mass=1.2,
+    friction=0.7,
+    placement=OBJECT,
+    yx_ratio=(0.6, 1.0),
+    description="a {metal} desk lamp with a {shade} shade",
+    variants=(None, (0.26, 0.2, 0.5)),
+)
+def desk_lamp(size: Vec3, rng: Rng) -> Design:
+    """A desk lamp: round base, upright pole, an arm reaching +X and a downward shade."""
+    d, w, h = size
+    hd = 0.5 * d
+    metal = pick(rng, (BLACK_METAL, BRASS, CHROME))
+    shade_mat = pick(rng, (LAMP_SHADE, WHITE_SHADE, metal))
+    base_r = 0.5 * w
+    bx = -hd + base_r
+    shade_r = clamp(min(0.5 * w, 0.5 * d - 0.01), 0.03, 0.09)
+    shade_h = clamp(uniform(rng, 0.7, 1.2) * shade_r, 0.04, 0.3 * h)
+    sx = hd - shade_r
+    arm_z = h - 0.008
+    shade_top = arm_z - 0.008
     parts: list[Part] = [
-        Lathe((0.0, 0.0, 0.0), ((0.05, 0.0), (0.065, 0.11)), TERRACOTTA, hollow=(0.008, 0.015)),
-        Cylinder((0.0, 0.0, 0.095), 0.05, 0.005, SOIL, collide=False),
-        Sphere((0.0, 0.0, 0.19), 0.09, FOLIAGE),
+        Cylinder((bx, 0.0, 0.012), base_r, 0.012, metal),
+        Cylinder((bx, 0.0, 0.5 * (0.024 + h)), 0.008, 0.5 * (h - 0.024), metal),
+        Cylinder((0.5 * (bx + sx), 0.0, arm_z), 0.008, 0.5 * (sx - bx), metal, axis="x"),
+        Lathe(
+            (sx, 0.0, shade_top - shade_h), ((shade_r, 0.0), (0.4 * shade_r, shade_h)), shade_mat
+        ),
     ]
-    return AssetDesign(
-        "potted_plant_small_01",
-        "potted_plant",
-        "a small green houseplant in a terracotta pot",
-        1.5,
-        0.7,
-        OBJECT,
-        tuple(parts),
-    )
+    return Design(tuple(parts), {"metal": metal.words, "shade": shade_mat.words})
 
 
-def desk_lamp() -> AssetDesign:
-    """A desk lamp: round base, upright pole, arm reaching +X and a downward shade."""
+def _fruit(size: Vec3, rng: Rng, skin, stem: bool) -> list[Part]:
+    d, _, h = size
+    r = 0.5 * d
+    stem_h = 0.008 if stem else 0.0
+    body = h - stem_h
+    cut = 2.0 * r - body  # flattened base
+    parts: list[Part] = [Sphere((0.0, 0.0, r - cut), r, skin, cut=0.0)]
+    if stem:
+        parts.append(
+            Cylinder(
+                (0.0, 0.0, body + 0.5 * stem_h - 0.002),
+                0.003,
+                0.5 * stem_h + 0.002,
+                STEM,
+                collide=False,
+            )
+        )
+    return parts
+
+
+@category(
+    "apple",
+    "object",
+    size=(0.08, 0.08, 0.083),
+    low=(0.06, 0.06, 0.05),
+    high=(0.1, 0.1, 0.11),
+    mass=0.18,
+    friction=0.7,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    zx_ratio=(0.9, 1.05),
+    description="a {skin} apple",
+    variants=(None, (0.072, 0.072, 0.07)),
+)
+def apple(size: Vec3, rng: Rng) -> Design:
+    """An apple: a sphere flattened at its base, with a stem."""
+    skin = pick(rng, (APPLE_RED, APPLE_GREEN))
+    return Design(tuple(_fruit(size, rng, skin, stem=True)), {"skin": skin.words})
+
+
+@category(
+    "orange",
+    "object",
+    size=(0.075, 0.075, 0.072),
+    low=(0.055, 0.055, 0.05),
+    high=(0.1, 0.1, 0.1),
+    mass=0.2,
+    friction=0.7,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    zx_ratio=(0.9, 0.98),
+    description="an orange",
+)
+def orange(size: Vec3, rng: Rng) -> Design:
+    """An orange: a sphere slightly flattened at its base."""
+    return Design(tuple(_fruit(size, rng, ORANGE_PEEL, stem=False)), {})
+
+
+@category(
+    "toy_block",
+    "object",
+    size=(0.05, 0.05, 0.05),
+    low=(0.02, 0.02, 0.02),
+    high=(0.12, 0.12, 0.12),
+    mass=0.06,
+    friction=0.6,
+    placement=OBJECT,
+    description="a {colour} wooden toy block",
+    variants=(None, (0.08, 0.04, 0.04)),
+)
+def toy_block(size: Vec3, rng: Rng) -> Design:
+    """A painted wooden block; its top is a surface when it is big enough."""
+    d, w, h = size
+    colour = pick(rng, TOYS)
+    top = min(d, w) > 0.055
+    part = block((-0.5 * d, 0.5 * d), (-0.5 * w, 0.5 * w), (0.0, h), colour, surface=top)
+    return Design((part,), {"colour": colour.words})
+
+
+@category(
+    "toy_ball",
+    "object",
+    size=(0.1, 0.1, 0.097),
+    low=(0.04, 0.04, 0.037),
+    high=(0.25, 0.25, 0.245),
+    mass=0.15,
+    friction=0.8,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    zx_ratio=(0.94, 0.98),
+    description="a {colour} soft toy ball",
+)
+def toy_ball(size: Vec3, rng: Rng) -> Design:
+    """A soft ball, slightly squashed flat where it rests so that it does not roll away."""
+    d, _, h = size
+    r = 0.5 * d
+    colour = pick(rng, TOYS)
+    return Design((Sphere((0.0, 0.0, h - r), r, colour, cut=0.0),), {"colour": colour.words})
+
+
+@category(
+    "remote",
+    "object",
+    size=(0.18, 0.05, 0.022),
+    low=(0.12, 0.035, 0.012),
+    high=(0.25, 0.07, 0.035),
+    mass=0.12,
+    friction=0.7,
+    placement=OBJECT,
+    description="a {colour} tv remote control",
+)
+def remote(size: Vec3, rng: Rng) -> Design:
+    """A remote control lying flat, buttons on top."""
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    body = pick(rng, (BLACK_PLASTIC, SPACE_GREY, WHITE_PLASTIC))
+    top = h - 0.0008
+    parts: list[Part] = [block((-hd, hd), (-hw, hw), (0.0, top), body)]
+    keys = BLACK_PLASTIC if body is not BLACK_PLASTIC else SPACE_GREY
+    for i in range(4):
+        x = -hd + 0.03 + i * (d - 0.06) / 3
+        parts.append(
+            block((x - 0.008, x + 0.008), (-0.3 * w, 0.3 * w), (top, h), keys, collide=False)
+        )
+    return Design(tuple(parts), {"colour": body.words})
+
+
+@category(
+    "pot",
+    "object",
+    size=(0.22, 0.3, 0.14),
+    low=(0.14, 0.17, 0.07),
+    high=(0.32, 0.46, 0.25),
+    mass=1.5,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=(1.15, 1.45),
+    description="a {metal} cooking pot with two handles{lid}",
+    variants=(None, (0.18, 0.24, 0.1)),
+)
+def pot(size: Vec3, rng: Rng) -> Design:
+    """A cooking pot (diameter x) with handles on +-Y, maybe with a lid."""
+    d, w, h = size
+    r = 0.5 * d
+    metal = pick(rng, (STEEL, BLACK_METAL, CHROME))
+    reach = 0.5 * (w - d)
+    lid = chance(rng, 0.5)
+    knob = 0.02 if lid else 0.0
+    body_h = h - knob - (0.006 if lid else 0.0)
     parts: list[Part] = [
-        Cylinder((0.0, 0.0, 0.015), 0.08, 0.015, BLACK_METAL),
-        Cylinder((-0.04, 0.0, 0.2), 0.008, 0.185, BLACK_METAL),
-        Cylinder((0.01, 0.0, 0.38), 0.008, 0.05, BLACK_METAL, axis="x"),
-        Lathe((0.06, 0.0, 0.29), ((0.06, 0.0), (0.025, 0.09)), LAMP_SHADE),
+        Lathe((0.0, 0.0, 0.0), ((r, 0.0), (r, body_h)), metal, hollow=(0.004, 0.006))
     ]
-    return AssetDesign(
-        "desk_lamp_01",
-        "desk_lamp",
-        "a black desk lamp with a cream shade",
-        1.2,
-        0.7,
-        OBJECT,
-        tuple(parts),
-    )
+    hz = body_h - 0.02
+    for sign in (-1.0, 1.0):
+        y = sorted((sign * (r - 0.004), sign * (r + reach)))
+        parts.append(block((-0.025, 0.025), (y[0], y[1]), (hz - 0.012, hz), BLACK_METAL))
+    if lid:
+        parts.append(Cylinder((0.0, 0.0, body_h + 0.003), r, 0.003, metal))
+        parts.append(
+            Cylinder((0.0, 0.0, body_h + 0.006 + 0.5 * knob), 0.015, 0.5 * knob, BLACK_METAL)
+        )
+    return Design(tuple(parts), {"metal": metal.words, "lid": " and a lid" if lid else ""})
 
 
-def toy_block() -> AssetDesign:
-    """A 5 cm wooden toy block."""
-    parts: list[Part] = [block((-0.025, 0.025), (-0.025, 0.025), (0.0, 0.05), TOY_RED)]
-    return AssetDesign(
-        "toy_block_01", "toy_block", "a red wooden toy block", 0.06, 0.6, OBJECT, tuple(parts)
-    )
-
-
-def designs() -> list[AssetDesign]:
-    """All designs of this module."""
-    return [
-        mug(),
-        book(),
-        bowl(),
-        plate(),
-        bottle(),
-        laptop(),
-        vase(),
-        cardboard_box(),
-        apple(),
-        small_potted_plant(),
-        desk_lamp(),
-        toy_block(),
+@category(
+    "pan",
+    "object",
+    size=(0.26, 0.48, 0.05),
+    low=(0.16, 0.28, 0.03),
+    high=(0.32, 0.66, 0.08),
+    mass=1.2,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=(1.6, 2.1),
+    description="a {metal} frying pan with a {handle} handle",
+)
+def pan(size: Vec3, rng: Rng) -> Design:
+    """A frying pan (diameter x) with a long handle on +Y."""
+    d, w, h = size
+    r = 0.5 * d
+    metal = pick(rng, (BLACK_METAL, STEEL))
+    handle = pick(rng, (BLACK_PLASTIC, *WOODS[:2], STEEL))
+    profile = ((0.85 * r, 0.0), (r, h))
+    parts: list[Part] = [
+        Lathe((0.0, 0.0, 0.0), profile, metal, hollow=(0.003, 0.004)),
+        block((-0.014, 0.014), (r - 0.006, w - r), (h - 0.02, h - 0.004), handle),
     ]
+    return Design(tuple(parts), {"metal": metal.words, "handle": handle.words})
+
+
+@category(
+    "candle",
+    "object",
+    size=(0.07, 0.07, 0.12),
+    low=(0.02, 0.02, 0.05),
+    high=(0.12, 0.12, 0.3),
+    mass=0.4,
+    friction=0.6,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    zx_ratio=(0.5, 10.0),
+    description="a {wax} pillar candle",
+    variants=(None, (0.025, 0.025, 0.25)),
+)
+def candle(size: Vec3, rng: Rng) -> Design:
+    """A pillar candle with its wick."""
+    d, _, h = size
+    wax = pick(rng, (WAX, RED_WAX))
+    wick_h = 0.01
+    parts: list[Part] = [
+        Cylinder((0.0, 0.0, 0.5 * (h - wick_h)), 0.5 * d, 0.5 * (h - wick_h), wax),
+        Cylinder(
+            (0.0, 0.0, h - 0.5 * wick_h - 0.001), 0.0015, 0.5 * wick_h + 0.001, WICK, collide=False
+        ),
+    ]
+    return Design(tuple(parts), {"wax": wax.words})
+
+
+@category(
+    "small_plant",
+    "object",
+    size=(0.18, 0.18, 0.28),
+    low=(0.1, 0.1, 0.14),
+    high=(0.35, 0.35, 0.6),
+    mass=1.5,
+    friction=0.7,
+    placement=OBJECT,
+    yx_ratio=ROUND,
+    zx_ratio=(1.1, 2.5),
+    description="a small {leaves} houseplant in a {pot} pot",
+    variants=(None, (0.14, 0.14, 0.2)),
+)
+def small_plant(size: Vec3, rng: Rng) -> Design:
+    """A small plant for shelves and tables: a pot and a round crown as wide as the plant."""
+    d, _, h = size
+    crown = 0.5 * d
+    pot_mat = pick(rng, (TERRACOTTA, *CERAMICS[:3]))
+    leaves = pick(rng, (FOLIAGE, DARK_FOLIAGE))
+    pot_h = h - uniform(rng, 1.3, 1.65) * crown
+    pot_r = clamp(uniform(rng, 0.55, 0.75) * crown, 0.03, crown)
+    parts: list[Part] = [
+        Lathe(
+            (0.0, 0.0, 0.0), ((0.8 * pot_r, 0.0), (pot_r, pot_h)), pot_mat, hollow=(0.006, 0.012)
+        ),
+        Cylinder((0.0, 0.0, pot_h - 0.012), pot_r - 0.01, 0.004, SOIL, collide=False),
+        Sphere((0.0, 0.0, h - crown), crown, leaves),
+    ]
+    return Design(tuple(parts), {"leaves": leaves.words, "pot": pot_mat.words})

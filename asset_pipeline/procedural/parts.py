@@ -41,6 +41,12 @@ class Material:
     rgba: Vec4
     specular: float = 0.3
     shininess: float = 0.3
+    label: str = ""
+
+    @property
+    def words(self) -> str:
+        """How a description names this material (``label`` or the name with spaces)."""
+        return self.label or self.name.replace("_", " ")
 
 
 @dataclass(frozen=True)

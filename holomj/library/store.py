@@ -14,6 +14,7 @@ from importlib import resources
 from pathlib import Path
 
 from holomj.errors import AssetNotFoundError, SpecError, closest_names
+from holomj.library.location import default_library_root
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.base import read_json, validate_model
 
@@ -22,11 +23,6 @@ BUILTIN_BOX = "builtin:box"
 
 def _package_data(*parts: str) -> Path:
     return Path(str(resources.files("holomj.data").joinpath(*parts)))
-
-
-def default_library_path() -> Path:
-    """The procedural default library shipped inside the package."""
-    return _package_data("default_library")
 
 
 @dataclass(frozen=True)
@@ -51,14 +47,14 @@ class AssetLibrary:
 
     @classmethod
     def open(cls, root: Path | str | None = None) -> AssetLibrary:
-        """Open the library at ``root`` (default: the shipped default library)."""
-        root = Path(root) if root is not None else default_library_path()
+        """Open the library at ``root`` (default: :func:`default_library_root`)."""
+        root = Path(root) if root is not None else default_library_root()
         index_path = root / "library.json"
         if not index_path.is_file():
             raise SpecError(
                 "not an asset library (no library.json)",
                 where=str(root),
-                fix="pass a folder written by 'holomj assets import' or the default library",
+                fix="build the default one with 'holomj assets build-default' or pass --library",
             )
         index = validate_model(LibraryIndex, read_json(index_path), str(index_path))
         assets = {BUILTIN_BOX: _load_asset(_package_data("builtin", "box"), BUILTIN_BOX)}

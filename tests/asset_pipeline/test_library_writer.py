@@ -8,8 +8,14 @@ from pathlib import Path
 import pytest
 
 from asset_pipeline import library_writer
-from asset_pipeline.library_writer import AssetBundle, add_assets, folder_for, write_library
-from holomj.errors import OutputExistsError, SpecError
+from asset_pipeline.library_writer import (
+    AssetBundle,
+    add_assets,
+    folder_for,
+    remove_assets,
+    write_library,
+)
+from holomj.errors import AssetNotFoundError, OutputExistsError, SpecError
 from holomj.library.store import AssetLibrary
 from holomj.spec.assets import AssetMeta
 
@@ -35,7 +41,11 @@ def bundle(asset_id: str, mesh: str = "box.obj", **files: bytes) -> AssetBundle:
 
 
 def snapshot(root: Path) -> dict[str, bytes]:
-    return {p.relative_to(root).as_posix(): p.read_bytes() for p in root.rglob("*") if p.is_file()}
+    return {
+        p.relative_to(root).as_posix(): p.read_bytes()
+        for p in root.rglob("*")
+        if p.is_file() and p.name != ".lock"
+    }
 
 
 def test_written_library_opens(tmp_path: Path) -> None:
@@ -107,28 +117,28 @@ def test_invalid_meta_is_rejected_and_leaves_old_library(tmp_path: Path) -> None
             overwrite=True,
         )
     assert snapshot(root) == before
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["lib"]
+    assert sorted(p.name for p in tmp_path.iterdir() if not p.name.endswith(".lock")) == ["lib"]
 
 
 def test_failure_midway_leaves_old_library(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     root = write_library(tmp_path / "lib", "t", [bundle("a")])
     before = snapshot(root)
-    real = library_writer._write_bundle
+    real = library_writer._fill_bundle
     calls = []
 
-    def flaky(library: Path, item: AssetBundle) -> None:
+    def flaky(folder: Path, item: AssetBundle) -> None:
         calls.append(item.meta.id)
         if len(calls) % 2 == 0:  # the second asset of every write
             raise OSError("disk full")
-        real(library, item)
+        real(folder, item)
 
-    monkeypatch.setattr(library_writer, "_write_bundle", flaky)
+    monkeypatch.setattr(library_writer, "_fill_bundle", flaky)
     with pytest.raises(OSError, match="disk full"):
         write_library(root, "t", [bundle("b"), bundle("c")], overwrite=True)
     with pytest.raises(OSError, match="disk full"):
         add_assets(root, [bundle("d"), bundle("e")])
     assert snapshot(root) == before
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["lib"]
+    assert sorted(p.name for p in tmp_path.iterdir() if not p.name.endswith(".lock")) == ["lib"]
 
 
 def test_add_assets_adds_and_replaces(tmp_path: Path) -> None:
@@ -138,7 +148,7 @@ def test_add_assets_adds_and_replaces(tmp_path: Path) -> None:
     assert sorted(lib.ids()) == ["a", "b", "builtin:box", "c"]
     assert [v.mesh for v in lib.get("b").meta.visual] == ["new.obj"]
     assert not (root / "b" / "extra").exists() and not (root / "b" / "box.obj").exists()
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["lib"]
+    assert sorted(p.name for p in tmp_path.iterdir() if not p.name.endswith(".lock")) == ["lib"]
     with pytest.raises(SpecError, match="duplicate"):
         add_assets(root, [bundle("x"), bundle("x")])
 
@@ -151,3 +161,20 @@ def test_add_assets_needs_a_library(tmp_path: Path) -> None:
 def test_folder_for_makes_plain_names() -> None:
     assert folder_for("holo:chair|v2+x") == "holo_chair_v2_x"
     assert folder_for(".hidden") == "_hidden"
+
+
+def test_remove_assets_and_sweep(tmp_path: Path) -> None:
+    root = write_library(tmp_path / "lib", "t", [bundle("a"), bundle("b")])
+    (root / "stray").mkdir()  # debris of an interrupted write: not in the index
+    assert sorted(remove_assets(root, ["a"])) == ["a", "stray"]
+    assert AssetLibrary.open(root).ids() == ["b", "builtin:box"]
+    with pytest.raises(AssetNotFoundError, match="'a'"):
+        remove_assets(root, ["a"])
+
+
+def test_replacing_an_asset_writes_a_fresh_folder_before_committing(tmp_path: Path) -> None:
+    root = write_library(tmp_path / "lib", "t", [bundle("a")])
+    add_assets(root, [bundle("a", mesh="new.obj")])
+    lib = AssetLibrary.open(root)
+    assert lib.get("a").root.name == "a-2"
+    assert not (root / "a").exists()

@@ -1,0 +1,229 @@
+"""Import one mesh file into a simulation-ready asset bundle (nothing is written to disk).
+
+``import_asset(path, asset_id, options)`` runs: load (flatten the scene, keep materials) ->
+normalise (Z up, front +X, optional uniform scale, origin at the footprint centre of the
+bottom) -> repair (weld, drop degenerate/duplicate faces, consistent winding) -> CoACD in a
+child process with a fallback chain -> hull post-processing (vertex cap, pull inside the
+visual, slivers to boxes) -> support surfaces -> metadata (category table, sidecar).
+
+The bundle holds ``visual_K.obj`` (one per material, with ``vt`` when textured),
+``texture_K.png`` and ``hull_KK.obj``; no thumbnails. Its bytes are deterministic for the same
+input and options. The report is JSON-able and says what was done and how well.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal
+
+from pydantic import TypeAdapter, ValidationError
+
+from asset_pipeline import annotate, physical
+from asset_pipeline.decompose import CoacdParams, decompose
+from asset_pipeline.hulls import postprocess
+from asset_pipeline.library_writer import AssetBundle
+from asset_pipeline.load import load_file
+from asset_pipeline.normalise import normalise
+from asset_pipeline.objfile import obj_bytes
+from asset_pipeline.proximity import MeshProximity
+from asset_pipeline.repair import repair
+from asset_pipeline.surfaces import support_surfaces
+from holomj.errors import FormatError, SpecError
+from holomj.spec.base import Identifier
+
+__all__ = ["CoacdParams", "ImportOptions", "ImportedAsset", "import_asset"]
+
+
+@dataclass(frozen=True)
+class ImportOptions:
+    """How to import a file (see the module docstring for the steps)."""
+
+    category: str | None = None  # else guessed from the file name, else "object"
+    size: tuple[float, float, float] | None = None  # uniform scale to fit inside this box (m)
+    description: str | None = None
+    mass_kg: float | None = None
+    up_axis: Literal["y", "z"] | None = None  # None: "y" for glTF/GLB, "z" otherwise
+    front: Literal["+x", "-x", "+y", "-y"] = "+x"  # source axis (after up-conversion) = front
+    sidecar: Path | None = None  # default: <file>.holomj.json / .yaml next to it, if present
+    coacd: CoacdParams = field(default_factory=CoacdParams)
+    max_faces: int = 2_000_000
+
+
+@dataclass(frozen=True)
+class ImportedAsset:
+    bundle: AssetBundle
+    report: dict
+
+
+def import_asset(
+    path: Path | str, asset_id: str, options: ImportOptions | None = None
+) -> ImportedAsset:
+    """Import ``path`` as asset ``asset_id``; raise FormatError/SpecError for bad input."""
+    options = options or ImportOptions()
+    path = Path(path)
+    where = str(path)
+    _check_id(asset_id)
+    timings: dict[str, float] = {}
+    clock = time.perf_counter()
+
+    def lap(name: str) -> None:
+        nonlocal clock
+        now = time.perf_counter()
+        timings[name] = round(now - clock, 3)
+        clock = now
+
+    sidecar_path = options.sidecar if options.sidecar is not None else find_sidecar(path)
+    sidecar = annotate.read_sidecar(Path(sidecar_path)) if sidecar_path else {}
+    sidecar_where = str(sidecar_path) if sidecar_path else where
+    loaded = load_file(path, options.max_faces)
+    lap("load")
+    up_axis = options.up_axis or ("y" if loaded.format in ("glb", "gltf") else "z")
+    parts, frame = normalise(loaded.parts, where, up_axis, options.front, options.size)
+    repaired = repair(parts)
+    if len(repaired.physics.faces) == 0:
+        raise FormatError("the mesh has only degenerate faces", where=where)
+    lap("normalise_repair")
+    manifold = repaired.watertight and repaired.winding_consistent
+    decomposition = decompose(repaired.physics, options.coacd, manifold)
+    lap("decompose")
+    proximity = MeshProximity(repaired.physics)
+    hullset = postprocess(decomposition.hulls, repaired.physics, proximity, repaired.watertight)
+    lap("hulls")
+    surfaces = support_surfaces(repaired.physics)
+    lap("surfaces")
+
+    files: dict[str, bytes] = {}
+    visual, textures = [], {}
+    for k, mesh in enumerate(repaired.visuals):
+        name = f"visual_{k}.obj"
+        files[name] = obj_bytes(mesh.vertices, mesh.faces, mesh.uv)
+        entry = {"mesh": name, "rgba": list(mesh.material.rgba)}
+        if mesh.material.texture_png is not None:
+            digest = hashlib.sha256(mesh.material.texture_png).hexdigest()
+            if digest not in textures:
+                textures[digest] = f"texture_{len(textures)}.png"
+                files[textures[digest]] = mesh.material.texture_png
+            entry["texture"] = textures[digest]
+        visual.append(entry)
+    collision = []
+    for k, collider in enumerate(hullset.colliders):
+        if collider.kind == "mesh":
+            name = f"hull_{k:02d}.obj"
+            files[name] = obj_bytes(collider.vertices, collider.faces)
+            collision.append({"kind": "mesh", "mesh": name, "volume_m3": collider.volume})
+        else:
+            collision.append(
+                {
+                    "kind": "box",
+                    "size": list(collider.size),
+                    "pos": list(collider.pos),
+                    "quat": list(collider.quat),
+                    "volume_m3": collider.volume,
+                }
+            )
+    volume = sum(c.volume for c in hullset.colliders)
+
+    guessed = physical.guess_category(path)
+    if options.category:
+        category, category_source = options.category, "option"
+    elif sidecar.get("category"):
+        category, category_source = str(sidecar["category"]), "sidecar"
+    elif guessed:
+        category, category_source = guessed, "file name"
+    else:
+        category, category_source = physical.DEFAULT_CATEGORY, "default"
+    info = physical.category_info(category, frame.size)
+    density = annotate.sidecar_number(sidecar, "density_kg_m3", sidecar_where)
+    density = density if density is not None else info.density_kg_m3
+    given = options.mass_kg
+    if given is None:
+        given = annotate.sidecar_number(sidecar, "mass_kg", sidecar_where)
+    mass, mass_source, mass_warnings = physical.resolve_mass(given, density, volume, info)
+    derived = {
+        "id": asset_id,
+        "category": category,
+        "description": annotate.describe(category),
+        "size": list(frame.size),
+        "mass_kg": mass,
+        "density_kg_m3": density,
+        "friction": info.friction,
+        "placement": list(info.placement),
+        "front": "+x",
+        "visual": visual,
+        "collision": collision,
+        "maxhullvert": hullset.maxhullvert,
+        "surfaces": [
+            {"height": s.height, "polygon": [list(p) for p in s.polygon], "area_m2": s.area}
+            for s in surfaces
+        ],
+        "source": f"{path.name} (up {up_axis}, front {options.front} -> +x, "
+        f"scale {frame.scale:.6g})",
+    }
+    explicit = {"category": options.category, "description": options.description}
+    if options.mass_kg is not None:
+        explicit["mass_kg"] = float(options.mass_kg)
+    meta, meta_warnings = annotate.build_meta(derived, sidecar, explicit, sidecar_where)
+    lap("annotate")
+
+    report = {
+        "asset_id": asset_id,
+        "source": {
+            "file": str(path),
+            "format": loaded.format,
+            "parts": len(loaded.parts),
+            "vertices": loaded.vertex_count,
+            "faces": loaded.face_count,
+            "sidecar": str(sidecar_path) if sidecar_path else None,
+        },
+        "normalisation": frame.as_report() | {"requested_size_m": options.size},
+        "repairs": repaired.stats,
+        "watertight": repaired.watertight,
+        "winding_consistent": repaired.winding_consistent,
+        "decomposition": {
+            "method": decomposition.method,
+            "preprocess_mode": decomposition.preprocess_mode,
+            "attempts": decomposition.attempts,
+            "fallback_reason": "; ".join(
+                f"{a['method']}: {a['reason']}"
+                for a in decomposition.attempts
+                if a["status"] != "ok" and "reason" in a
+            )
+            or None,
+        },
+        "quality": hullset.quality,
+        "surfaces": [{"height": s.height, "area_m2": s.area} for s in surfaces],
+        "physical": {
+            "category": meta.category,
+            "category_source": category_source,
+            "category_known": info.known,
+            "density_kg_m3": meta.density_kg_m3,
+            "mass_kg": meta.mass,
+            "mass_source": "given" if options.mass_kg is not None else mass_source,
+            "mass_range_kg": list(info.mass_range_kg),
+            "upright": info.upright,
+            "friction": meta.friction,
+        },
+        "files": {name: len(data) for name, data in sorted(files.items())},
+        "timings_s": timings,
+        "warnings": loaded.warnings + mass_warnings + meta_warnings,
+    }
+    return ImportedAsset(bundle=AssetBundle(meta=meta, files=files), report=report)
+
+
+def find_sidecar(path: Path) -> Path | None:
+    """The default sidecar of ``path`` (see :mod:`asset_pipeline.annotate`)."""
+    return annotate.find_sidecar(path)
+
+
+def _check_id(asset_id: str) -> None:
+    try:
+        TypeAdapter(Identifier).validate_python(asset_id)
+    except ValidationError:
+        raise SpecError(
+            f"invalid asset id {asset_id!r}",
+            where="asset_id",
+            fix="use letters, digits and _ . : | + - (not starting with a symbol)",
+        ) from None

@@ -1,0 +1,340 @@
+"""Importing many mesh files into a library: ids, a content-addressed cache, a process pool.
+
+Each file becomes one asset. Its processed bundle (meshes, hulls, textures, thumbnails,
+``derivation.json``) is cached under ``LIB/.cache/<key>/``, where the key hashes the pipeline's
+own source code, the import options and the bytes of the file and its companions (``.bin``,
+``.mtl``, textures). Re-importing the same bytes with the same options is instant; changing an
+option re-processes. Every finished asset is committed to the library index at once (see
+:func:`asset_pipeline.library_writer.add_assets`), so an import killed half-way keeps what it
+finished and a second run resumes from the cache.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import hashlib
+import json
+import multiprocessing
+import re
+import time
+from collections.abc import Callable, Iterable, Sequence
+from concurrent.futures import Future, ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from asset_pipeline.library_writer import AssetBundle, add_assets, dumps_json
+from holomj.atomic import replace_folder
+from holomj.errors import HolomjError, InputError
+from holomj.spec.assets import AssetMeta
+from holomj.spec.base import read_json, validate_model
+
+MESH_SUFFIXES = (".glb", ".gltf", ".obj", ".stl", ".ply")
+COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg")
+# Collision meshes shipped beside real assets (V-HACD, LIBERO): not assets themselves.
+_COLLISION_STEMS = re.compile(r"(_vhacd|_col|_collision|_coll)$", re.IGNORECASE)
+_GENERIC_STEMS = {"textured", "model", "mesh", "scene", "untitled", "object", "base"}
+CACHE_DIR = ".cache"
+DERIVATION_FILE = "derivation.json"
+
+
+PRESETS: dict[str, dict[str, float | int]] = {
+    # Seconds per object: previews, tests, CI.
+    "fast": {
+        "threshold": 0.3,
+        "max_convex_hull": 4,
+        "preprocess_resolution": 20,
+        "resolution": 500,
+        "mcts_iterations": 20,
+    },
+    # CoacdParams' own defaults.
+    "default": {},
+    # Closer hulls for contact-rich manipulation; minutes per object.
+    "fine": {"threshold": 0.03, "max_convex_hull": 32, "mcts_iterations": 300, "mcts_max_depth": 4},
+}
+
+
+def coacd_params(preset: str = "default", **overrides: float | int | None) -> Any:
+    """CoacdParams of a named preset, with explicit overrides (None means keep)."""
+    from asset_pipeline.decompose import CoacdParams
+
+    if preset not in PRESETS:
+        raise InputError(
+            f"unknown preset {preset!r}", where="--preset", fix=f"use one of: {', '.join(PRESETS)}"
+        )
+    values = {**PRESETS[preset], **{k: v for k, v in overrides.items() if v is not None}}
+    return dataclasses.replace(CoacdParams(), **values)
+
+
+@dataclass(frozen=True)
+class ImportJob:
+    """One file to import as one asset."""
+
+    path: Path
+    asset_id: str
+
+
+@dataclass
+class JobOutcome:
+    """What happened to one file."""
+
+    path: str
+    asset_id: str
+    ok: bool
+    cached: bool = False
+    seconds: float = 0.0
+    error: str | None = None
+    hulls: int | None = None
+    mass_kg: float | None = None
+    cache_key: str | None = None
+
+
+@dataclass
+class ImportSummary:
+    """All outcomes of one ``holomj assets import`` run."""
+
+    outcomes: list[JobOutcome] = field(default_factory=list)
+
+    @property
+    def succeeded(self) -> list[JobOutcome]:
+        """Outcomes that added an asset."""
+        return [o for o in self.outcomes if o.ok]
+
+    @property
+    def failed(self) -> list[JobOutcome]:
+        """Outcomes that did not."""
+        return [o for o in self.outcomes if not o.ok]
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-able form."""
+        return {
+            "succeeded": len(self.succeeded),
+            "failed": len(self.failed),
+            "cached": sum(1 for o in self.outcomes if o.cached),
+            "outcomes": [dataclasses.asdict(o) for o in self.outcomes],
+        }
+
+
+def find_mesh_files(paths: Sequence[Path]) -> list[Path]:
+    """Mesh files named directly, or found (recursively, sorted) in named folders."""
+    found: list[Path] = []
+    for path in paths:
+        path = Path(path)
+        if path.is_dir():
+            found.extend(
+                p
+                for p in sorted(path.rglob("*"))
+                if p.is_file()
+                and p.suffix.lower() in MESH_SUFFIXES
+                and not _COLLISION_STEMS.search(p.stem)
+            )
+        elif path.exists():
+            found.append(path)
+        else:
+            raise InputError("file not found", where=str(path))
+    return found
+
+
+def asset_id_for(path: Path) -> str:
+    """An asset id from a file name; generic names (``textured.obj``) use their folder's."""
+    stem = path.stem
+    if stem.lower() in _GENERIC_STEMS or re.fullmatch(r"[\d_\-]+", stem):
+        stem = path.parent.name or stem
+    stem = re.sub(r"_(1k|2k|4k)$", "", stem)
+    ident = re.sub(r"[^A-Za-z0-9_.\-]+", "_", stem).strip("_.-")
+    return ident or "asset"
+
+
+def plan_jobs(paths: Sequence[Path], asset_id: str | None = None) -> list[ImportJob]:
+    """Jobs for the given files and folders, with unique ids (``_2``, ``_3`` on clashes)."""
+    files = find_mesh_files(paths)
+    if not files:
+        raise InputError("no mesh files found", where=", ".join(str(p) for p in paths))
+    if asset_id is not None and len(files) > 1:
+        raise InputError("--id names one asset but several files were given", where="--id")
+    jobs: list[ImportJob] = []
+    used: set[str] = set()
+    for path in files:
+        base = asset_id or asset_id_for(path)
+        ident, n = base, 1
+        while ident in used:
+            n += 1
+            ident = f"{base}_{n}"
+        used.add(ident)
+        jobs.append(ImportJob(path=path, asset_id=ident))
+    return jobs
+
+
+def source_files(path: Path) -> list[Path]:
+    """The file and its companions (same folder, and a ``textures/`` folder) that shape it."""
+    folder = path.parent
+    companions = [
+        p
+        for p in sorted(folder.iterdir())
+        if p.is_file() and p != path and p.suffix.lower() in COMPANION_SUFFIXES
+    ]
+    textures = folder / "textures"
+    if textures.is_dir():
+        companions += sorted(p for p in textures.iterdir() if p.is_file())
+    return [path, *companions]
+
+
+@functools.cache
+def pipeline_version() -> str:
+    """A hash of the asset pipeline's own code: a code change invalidates every cache entry."""
+    digest = hashlib.sha256()
+    package = Path(__file__).parent
+    for source in sorted(package.rglob("*.py")) + sorted((package / "data").glob("*.json")):
+        if "procedural" in source.parts:
+            continue
+        digest.update(source.relative_to(package).as_posix().encode())
+        digest.update(source.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+def cache_key(path: Path, options: Any) -> str:
+    """Content address of one import: pipeline code + options + source bytes."""
+    digest = hashlib.sha256()
+    digest.update(pipeline_version().encode())
+    digest.update(json.dumps(_jsonable(options), sort_keys=True).encode())
+    for source in source_files(path):
+        digest.update(source.name.encode())
+        digest.update(hashlib.sha256(source.read_bytes()).digest())
+    return digest.hexdigest()[:32]
+
+
+def _jsonable(value: Any) -> Any:
+    if dataclasses.is_dataclass(value):
+        return {f.name: _jsonable(getattr(value, f.name)) for f in dataclasses.fields(value)}
+    if isinstance(value, (list, tuple)):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, Path):
+        return str(value)
+    return value
+
+
+def load_cached(cache_root: Path, key: str, asset_id: str) -> tuple[AssetBundle, dict] | None:
+    """The cached bundle for ``key``, re-labelled with ``asset_id``; None if absent or broken."""
+    folder = cache_root / key
+    meta_path = folder / "asset.json"
+    if not meta_path.is_file():
+        return None
+    try:
+        meta = validate_model(AssetMeta, read_json(meta_path), str(meta_path))
+        files = {
+            p.relative_to(folder).as_posix(): p.read_bytes()
+            for p in sorted(folder.rglob("*"))
+            if p.is_file() and p.name != "asset.json"
+        }
+        report = json.loads(files.get(DERIVATION_FILE, b"{}"))
+    except (HolomjError, OSError, ValueError):
+        return None
+    return AssetBundle(meta=meta.model_copy(update={"id": asset_id}), files=files), report
+
+
+def store_cached(cache_root: Path, key: str, bundle: AssetBundle) -> None:
+    """Cache ``bundle`` under ``key`` (atomically: a killed write leaves no entry)."""
+
+    def fill(folder: Path) -> None:
+        for rel, data in bundle.files.items():
+            target = folder / rel
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(data)
+        (folder / "asset.json").write_bytes(dumps_json(bundle.meta.model_dump(mode="json")))
+
+    replace_folder(cache_root / key, fill)
+
+
+def process_job(job: ImportJob, options: Any, cache_root: Path, thumbnails: bool) -> JobOutcome:
+    """Import one file into the cache (or find it there); never raises for bad input."""
+    from asset_pipeline.importer import import_asset
+    from asset_pipeline.thumbnails import with_thumbnails
+
+    start = time.perf_counter()
+    outcome = JobOutcome(path=str(job.path), asset_id=job.asset_id, ok=False)
+    try:
+        key = cache_key(job.path, options)
+        outcome.cache_key = key
+        cached = load_cached(cache_root, key, job.asset_id)
+        if cached is None:
+            imported = import_asset(job.path, job.asset_id, options)
+            bundle = imported.bundle
+            if thumbnails:
+                bundle = with_thumbnails(bundle)
+            report = {**imported.report, "cache_key": key, "pipeline_version": pipeline_version()}
+            files = {**bundle.files, DERIVATION_FILE: dumps_json(report)}
+            bundle = AssetBundle(meta=bundle.meta, files=files)
+            store_cached(cache_root, key, bundle)
+        else:
+            bundle, report = cached
+            outcome.cached = True
+        outcome.ok = True
+        outcome.hulls = sum(1 for c in bundle.meta.collision)
+        outcome.mass_kg = round(bundle.meta.mass, 4)
+    except HolomjError as err:
+        outcome.error = err.one_line()
+    outcome.seconds = round(time.perf_counter() - start, 3)
+    return outcome
+
+
+def run_imports(
+    jobs: Sequence[ImportJob],
+    library_root: Path,
+    options: Any,
+    *,
+    workers: int = 1,
+    thumbnails: bool = True,
+    on_done: Callable[[JobOutcome], None] | None = None,
+) -> ImportSummary:
+    """Import ``jobs`` into the library at ``library_root`` with ``workers`` processes.
+
+    A file that fails (bad mesh, crash of its worker) is reported and the others go on.
+    Each success is committed to the library as soon as it is done.
+    """
+    root = Path(library_root)
+    cache_root = root / CACHE_DIR
+    cache_root.mkdir(parents=True, exist_ok=True)
+    summary = ImportSummary()
+
+    def finish(job: ImportJob, outcome: JobOutcome) -> None:
+        if outcome.ok and outcome.cache_key is not None:
+            cached = load_cached(cache_root, outcome.cache_key, job.asset_id)
+            if cached is None:
+                outcome.ok, outcome.error = False, "cache entry vanished before commit"
+            else:
+                add_assets(root, [cached[0]])
+        summary.outcomes.append(outcome)
+        if on_done is not None:
+            on_done(outcome)
+
+    if workers <= 1 or len(jobs) <= 1:
+        for job in jobs:
+            finish(job, process_job(job, options, cache_root, thumbnails))
+        return summary
+    context = multiprocessing.get_context("spawn")
+    with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+        futures: dict[Future[JobOutcome], ImportJob] = {
+            pool.submit(process_job, job, options, cache_root, thumbnails): job for job in jobs
+        }
+        for future in as_completed(futures):
+            job = futures[future]
+            try:
+                outcome = future.result()
+            except BrokenProcessPool:
+                outcome = JobOutcome(
+                    str(job.path), job.asset_id, ok=False, error="worker process died"
+                )
+            finish(job, outcome)
+    summary.outcomes.sort(key=lambda o: o.path)
+    return summary
+
+
+def iter_assets(root: Path) -> Iterable[AssetMeta]:
+    """The metadata of every asset in a library, sorted by id."""
+    from holomj.library.store import AssetLibrary
+
+    library = AssetLibrary.open(root)
+    for asset_id in library.ids():
+        yield library.get(asset_id).meta

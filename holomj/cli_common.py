@@ -1,0 +1,32 @@
+"""What every CLI command shares: consoles, JSON output and turning errors into exit codes."""
+
+from __future__ import annotations
+
+import json
+import sys
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+import typer
+from rich.console import Console
+
+from holomj.errors import HolomjError
+
+out_console = Console(soft_wrap=True)
+err_console = Console(stderr=True, highlight=False, soft_wrap=True)
+
+T = TypeVar("T")
+
+
+def guard(job: Callable[[], T]) -> T:
+    """Run ``job``; a HolomjError becomes one line on stderr and its exit code."""
+    try:
+        return job()
+    except HolomjError as err:
+        err_console.print(f"error: {err.one_line()}", markup=False)
+        raise typer.Exit(code=err.exit_code) from None
+
+
+def emit_json(data: Any) -> None:
+    """Print ``data`` as JSON on stdout."""
+    sys.stdout.write(json.dumps(data, indent=2, sort_keys=True) + "\n")

@@ -26,7 +26,10 @@ def test_thumbnails_show_the_asset_from_three_angles(default_library: AssetLibra
     sofa = next(i for i in default_library.ids() if default_library.get(i).meta.category == "sofa")
     bundle = with_thumbnails(_bundle(default_library, sofa), pixels=96)
     assert bundle.meta.thumbnails == sorted(f"thumbnails/{v}.png" for v in VIEWS)
-    images = [np.asarray(Image.open(io.BytesIO(bundle.files[p])).convert("RGB")) for p in bundle.meta.thumbnails]
+    images = [
+        np.asarray(Image.open(io.BytesIO(bundle.files[p])).convert("RGB"))
+        for p in bundle.meta.thumbnails
+    ]
     for image in images:
         assert image.shape == (96, 96, 3)
         assert image.std() > 10, "thumbnail is blank"

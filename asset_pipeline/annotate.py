@@ -2,11 +2,10 @@
 
 A sidecar is a JSON or YAML mapping next to the mesh (``chair.holomj.json``,
 ``chair.glb.holomj.json``, or ``.yaml``/``.yml``) or passed explicitly. It may set any
-:class:`~holomj.spec.assets.AssetMeta` field, plus ``attribution``, which AssetMeta has no field
-for and which is appended to ``license``. Precedence: explicit import options (category,
-description, mass) > sidecar > derived values; the id is always the one asked for. A sidecar
-category or density also feeds the derived friction, placement and mass. Errors name the
-sidecar file and the field.
+:class:`~holomj.spec.assets.AssetMeta` field (``license`` and ``attribution`` included).
+Precedence: explicit import options (category, description, mass) > sidecar > derived
+values; the id is always the one asked for. A sidecar category or density also feeds the
+derived friction, placement and mass. Errors name the sidecar file and the field.
 """
 
 from __future__ import annotations
@@ -21,7 +20,6 @@ from holomj.spec.assets import AssetMeta
 from holomj.spec.base import validate_model
 
 SIDECAR_SUFFIXES = (".holomj.json", ".holomj.yaml", ".holomj.yml")
-EXTRA_KEYS = ("attribution",)
 
 
 def find_sidecar(path: Path) -> Path | None:
@@ -63,7 +61,7 @@ def read_sidecar(path: Path) -> dict[str, Any]:
         return {}
     if not isinstance(data, dict) or not all(isinstance(k, str) for k in data):
         raise SpecError("a sidecar must be a mapping of AssetMeta fields", where=where)
-    known = set(AssetMeta.model_fields) | set(EXTRA_KEYS)
+    known = set(AssetMeta.model_fields)
     for key in data:
         if key not in known:
             raise SpecError("unknown field", where=f"{where}: {key}", fix=_fields_hint())
@@ -98,22 +96,15 @@ def build_meta(
     """Merge derived < sidecar < explicit fields and validate; errors name ``source``."""
     warnings = []
     data = dict(derived)
-    extra = {k: sidecar[k] for k in EXTRA_KEYS if k in sidecar}
     for key, value in sidecar.items():
-        if key in EXTRA_KEYS:
-            continue
         if key == "id" and value != derived["id"]:
             warnings.append(f"sidecar id {value!r} ignored: the asset id is {derived['id']!r}")
             continue
         data[key] = value
     data.update({k: v for k, v in explicit.items() if v is not None})
-    if extra.get("attribution"):
-        attribution = str(extra["attribution"])
-        license_text = data.get("license")
-        data["license"] = f"{license_text}; {attribution}" if license_text else attribution
     return validate_model(AssetMeta, data, source), warnings
 
 
 def _fields_hint() -> str:
-    names = sorted(set(AssetMeta.model_fields) | set(EXTRA_KEYS))
+    names = sorted(AssetMeta.model_fields)
     return "known fields: " + ", ".join(names)

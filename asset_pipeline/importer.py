@@ -151,6 +151,7 @@ def import_asset(
         "density_kg_m3": density,
         "friction": info.friction,
         "placement": list(info.placement),
+        "upright": info.upright,
         "front": "+x",
         "visual": visual,
         "collision": collision,

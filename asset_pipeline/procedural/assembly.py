@@ -41,6 +41,25 @@ CLEARANCE = 0.05  # free height required above every support surface
 PROUD = 1e-3  # parts standing less than this above a surface (tape, a screen) do not block it
 
 
+# Small objects that only make sense standing (spawn-and-drop rejects them tipped over).
+UPRIGHT_CATEGORIES = frozenset(
+    {
+        "mug",
+        "cup",
+        "bowl",
+        "bottle",
+        "vase",
+        "candle",
+        "small_plant",
+        "potted_plant",
+        "desk_lamp",
+        "floor_lamp",
+        "pot",
+        "laptop",
+    }
+)
+
+
 def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBundle:
     """Build the bundle (metadata + OBJ files) of ``design``.
 
@@ -94,6 +113,7 @@ def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBun
         "density_kg_m3": round(design.mass_kg / volume, 3),
         "friction": design.friction,
         "placement": list(design.placement),
+        "upright": design.category in UPRIGHT_CATEGORIES,
         "visual": [v.model_dump(mode="json") for v in visual],
         "collision": [c.model_dump(mode="json") for c in collision],
         "surfaces": [s.model_dump(mode="json") for s in surfaces],

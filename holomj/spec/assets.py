@@ -99,6 +99,9 @@ class AssetMeta(FrozenModel):
         default_factory=lambda: ["floor"]
     )
     front: Literal["+x"] = "+x"
+    upright: bool = Field(
+        default=False, description="Must stand upright when placed (a mug, a vase, a bottle)."
+    )
     visual: list[VisualPart] = Field(min_length=1)
     collision: list[CollisionPart] = Field(min_length=1)
     maxhullvert: Annotated[int, Field(ge=4, le=1024)] = 64
@@ -106,6 +109,7 @@ class AssetMeta(FrozenModel):
     thumbnails: list[RelPath] = Field(default_factory=list)
     source: str | None = None
     license: str | None = None
+    attribution: str | None = None
 
     @property
     def collision_volume_m3(self) -> float:

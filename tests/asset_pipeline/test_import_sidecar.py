@@ -50,7 +50,7 @@ def test_json_sidecar_next_to_the_file_overrides_fields(crate: Path) -> None:
     assert meta.category == "box" and meta.description == "a box"
     assert meta.friction == 1.2
     assert meta.placement == ["floor", "object"]
-    assert meta.license == "CC-BY-4.0; Jane Doe"
+    assert meta.license == "CC-BY-4.0" and meta.attribution == "Jane Doe"
     assert meta.mass == pytest.approx(100.0 * 0.4 * 0.3 * 0.25, rel=1e-3)
     assert imported.report["source"]["sidecar"] == str(sidecar)
     # Explicit options win over the sidecar.

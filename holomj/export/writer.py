@@ -4,7 +4,8 @@ Layout of ``OUT/``::
 
     scene.xml      MJCF with relative paths only (meshdir/texturedir = assets)
     scene.json     the SceneSpec (texture paths rewritten to point into assets/)
-    assets/        every mesh and texture the model needs
+    assets/        every mesh and texture the model needs; also an asset library
+                   (library.json + <asset>/asset.json) of the assets the scene uses
     *.json         extra reports handed in by the caller (e.g. import_report.json)
 
 Everything is written into a temporary folder beside OUT and renamed into place at the end, so
@@ -26,6 +27,8 @@ from holomj.spec.scene import SceneSpec
 SCENE_XML = "scene.xml"
 SCENE_JSON = "scene.json"
 ASSETS_DIR = "assets"
+LIBRARY_INDEX = "library.json"
+LIBRARY_META = "asset.json"
 
 
 def prepare_output(out: Path, overwrite: bool) -> None:
@@ -81,5 +84,22 @@ def _write_tree(compiled: CompiledScene, root: Path, extra_json: dict[str, Any])
         target = root / ASSETS_DIR / relative
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)
+    _write_asset_library(compiled, root / ASSETS_DIR)
     for name, data in sorted(extra_json.items()):
         (root / name).write_text(dump_json(data), encoding="utf-8")
+
+
+def _write_asset_library(compiled: CompiledScene, assets_dir: Path) -> None:
+    """Make ``assets/`` an asset library of the assets the scene uses (without thumbnails), so
+    the folder can be recompiled, validated with free furniture or populated on its own."""
+    index = {}
+    for asset_id, asset in compiled.assets.items():
+        folder = names.asset_folder(asset_id)
+        meta = asset.meta.model_copy(update={"thumbnails": []})
+        target = assets_dir / folder / LIBRARY_META
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(dump_json(meta.model_dump(mode="json")), encoding="utf-8")
+        index[asset_id] = folder
+    assets_dir.mkdir(parents=True, exist_ok=True)
+    library = {"schema_version": "1.0", "name": f"{compiled.scene.name} assets", "assets": index}
+    (assets_dir / LIBRARY_INDEX).write_text(dump_json(library), encoding="utf-8")

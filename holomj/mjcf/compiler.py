@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import mujoco
 
 from holomj.errors import CompileError
-from holomj.library.store import AssetLibrary
+from holomj.library.store import AssetLibrary, LibraryAsset
 from holomj.mjcf.context import BuildContext
-from holomj.mjcf.objects import ObjectBuilder
+from holomj.mjcf.objects import Furniture, ObjectBuilder
 from holomj.mjcf.openings import add_openings, place_openings
 from holomj.mjcf.structure import add_floors_and_ceilings, add_ground, add_walls
 from holomj.mjcf.views import add_cameras, add_lights
@@ -28,14 +28,22 @@ class CompiledScene:
     spec: mujoco.MjSpec
     model: mujoco.MjModel
     files: dict[str, bytes]
+    assets: dict[str, LibraryAsset] = field(default_factory=dict)
+    furniture: Furniture = "as-is"
 
     def to_xml(self) -> str:
         """The scene as MJCF text, with paths relative to the exported folder."""
         return self.spec.to_xml()
 
 
-def compile_scene(scene: SceneSpec, library: AssetLibrary) -> CompiledScene:
+def compile_scene(
+    scene: SceneSpec, library: AssetLibrary, *, furniture: Furniture = "as-is"
+) -> CompiledScene:
     """Build the MjSpec for ``scene`` and compile it.
+
+    ``furniture`` overrides the ``static`` flag of floor-standing furniture: ``static`` (no
+    joints: cheap, stable), ``free`` (free joints: what validation uses, so a badly placed
+    cabinet shows up), or ``as-is``. Wall- and ceiling-mounted assets are always static.
 
     Raises :class:`~holomj.errors.AssetNotFoundError` for objects whose asset the library lacks,
     :class:`~holomj.errors.SpecError` for geometry that cannot be built and
@@ -50,7 +58,8 @@ def compile_scene(scene: SceneSpec, library: AssetLibrary) -> CompiledScene:
     add_floors_and_ceilings(ctx)
     add_walls(ctx, walls, openings)
     add_openings(ctx, openings)
-    ObjectBuilder(ctx, library).add_all()
+    objects = ObjectBuilder(ctx, library, furniture)
+    objects.add_all()
     add_lights(ctx)
     add_cameras(ctx)
     spec.assets = dict(ctx.files)
@@ -58,7 +67,14 @@ def compile_scene(scene: SceneSpec, library: AssetLibrary) -> CompiledScene:
         model = spec.compile()
     except ValueError as err:
         raise CompileError(f"MuJoCo rejected the model: {' '.join(str(err).split())}") from None
-    return CompiledScene(scene=scene, spec=spec, model=model, files=dict(sorted(ctx.files.items())))
+    return CompiledScene(
+        scene=scene,
+        spec=spec,
+        model=model,
+        files=dict(sorted(ctx.files.items())),
+        assets=dict(sorted(objects.used.items())),
+        furniture=furniture,
+    )
 
 
 def _model_name(name: str) -> str:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Literal
 
 import mujoco
 import numpy as np
@@ -21,7 +22,7 @@ from holomj.library.store import AssetLibrary, LibraryAsset
 from holomj.mjcf import names
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean, yaw_quat
-from holomj.spec.assets import CollisionPart
+from holomj.spec.assets import AssetMeta, CollisionPart
 from holomj.spec.scene import SceneObject
 
 _PRIMITIVES = {
@@ -41,12 +42,34 @@ class _AssetHandles:
     collision_meshes: dict[int, str]
 
 
+Furniture = Literal["as-is", "static", "free"]
+
+
+def is_furniture(obj: SceneObject, meta: AssetMeta) -> bool:
+    """Objects standing on the floor (no support) that are not small props."""
+    return obj.support is None and "floor" in meta.placement and "object" not in meta.placement
+
+
+def is_static(obj: SceneObject, meta: AssetMeta, furniture: Furniture) -> bool:
+    """Whether an object gets no joint: wall- and ceiling-mounted assets always; furniture
+    as the ``furniture`` option says (``as-is`` keeps the scene's flag); others by their flag."""
+    if set(meta.placement) <= {"wall", "ceiling"}:
+        return True
+    if furniture != "as-is" and is_furniture(obj, meta):
+        return furniture == "static"
+    return obj.static
+
+
 class ObjectBuilder:
     """Adds scene objects to an MjSpec, declaring each asset's meshes once per scale."""
 
-    def __init__(self, ctx: BuildContext, library: AssetLibrary) -> None:
+    def __init__(
+        self, ctx: BuildContext, library: AssetLibrary, furniture: Furniture = "as-is"
+    ) -> None:
         self.ctx = ctx
         self.library = library
+        self.furniture = furniture
+        self.used: dict[str, LibraryAsset] = {}
         self._handles: dict[tuple[str, tuple[float, float, float]], _AssetHandles] = {}
         self._materials: dict[str, list[str]] = {}
 
@@ -62,14 +85,16 @@ class ObjectBuilder:
     def add(self, obj: SceneObject, asset: LibraryAsset) -> mujoco.MjsBody:
         """Add one object as a body (with a free joint unless it is static)."""
         meta = asset.meta
+        self.used[meta.id] = asset
         scale = obj.scale3
         handles = self._asset_handles(asset, scale)
+        static = is_static(obj, meta, self.furniture)
         quat = obj.quat if obj.quat is not None else yaw_quat(math.radians(obj.yaw_deg))
         body = self.ctx.spec.worldbody.add_body(
             name=names.object_body(obj.id), pos=clean(obj.position), quat=clean(quat)
         )
         body.info = f"object {obj.id} (asset {meta.id})"
-        if not obj.static:
+        if not static:
             body.add_freejoint(name=names.object_joint(obj.id))
         for k, (mesh, material) in enumerate(zip(handles.visual_meshes, handles.visual_materials)):
             geom = body.add_geom(
@@ -83,8 +108,8 @@ class ObjectBuilder:
         volume_factor = scale[0] * scale[1] * scale[2]
         mass = obj.mass_kg if obj.mass_kg is not None else meta.mass * volume_factor
         total_volume = meta.collision_volume_m3
-        default = "collision" if obj.static else "prop"
-        torsion, rolling = (0.005, 0.0001) if obj.static else (0.01, 0.001)
+        default = "collision" if static else "prop"
+        torsion, rolling = (0.005, 0.0001) if static else (0.01, 0.001)
         for k, part in enumerate(meta.collision):
             geom = body.add_geom(
                 name=names.object_collision(obj.id, k),

@@ -40,6 +40,26 @@ def asset_prefix(asset_id: str, scale: tuple[float, float, float]) -> str:
     return f"asset/{asset_id}@" + "x".join(f"{s:.6g}" for s in scale)
 
 
+def asset_visual_mesh(prefix: str, index: int) -> str:
+    """A visual mesh of an asset at one scale (``prefix`` from :func:`asset_prefix`)."""
+    return f"{prefix}/visual_{index}"
+
+
+def asset_collision_mesh(prefix: str, index: int) -> str:
+    """A collision hull mesh of an asset at one scale."""
+    return f"{prefix}/collision_{index}"
+
+
+def asset_material(asset_id: str, index: int) -> str:
+    """The material of an asset's ``index``-th visual part (shared by all scales)."""
+    return f"asset/{asset_id}/material_{index}"
+
+
+def asset_texture(asset_id: str, index: int) -> str:
+    """The texture of an asset's ``index``-th visual part."""
+    return f"asset/{asset_id}/texture_{index}"
+
+
 def asset_folder(asset_id: str) -> str:
     """A file-system-safe folder name for an asset's files under ``assets/``."""
     safe = _UNSAFE.sub("_", asset_id)

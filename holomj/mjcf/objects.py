@@ -133,7 +133,7 @@ class ObjectBuilder:
         visual_meshes = []
         for k, part in enumerate(meta.visual):
             mesh = self.ctx.spec.add_mesh(
-                name=f"{prefix}/visual_{k}",
+                name=names.asset_visual_mesh(prefix, k),
                 file=self._register(asset, folder, part.mesh),
                 scale=list(scale),
                 inertia=mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL,
@@ -145,7 +145,7 @@ class ObjectBuilder:
             if part.kind != "mesh" or part.mesh is None:
                 continue
             mesh = self.ctx.spec.add_mesh(
-                name=f"{prefix}/collision_{k}",
+                name=names.asset_collision_mesh(prefix, k),
                 file=self._register(asset, folder, part.mesh),
                 scale=list(scale),
                 inertia=mujoco.mjtMeshInertia.mjMESH_INERTIA_CONVEX,
@@ -165,7 +165,7 @@ class ObjectBuilder:
             return self._materials[meta.id]
         materials = []
         for k, part in enumerate(meta.visual):
-            name = f"asset/{meta.id}/material_{k}"
+            name = names.asset_material(meta.id, k)
             material = self.ctx.spec.add_material(
                 name=name,
                 rgba=list(part.rgba),
@@ -173,7 +173,7 @@ class ObjectBuilder:
                 shininess=part.shininess,
             )
             if part.texture is not None:
-                texture = f"asset/{meta.id}/texture_{k}"
+                texture = names.asset_texture(meta.id, k)
                 self.ctx.spec.add_texture(
                     name=texture,
                     type=mujoco.mjtTexture.mjTEXTURE_2D,

@@ -16,6 +16,8 @@ from rich.table import Table
 
 from holomj.cli_assets import assets_app, resolve_library
 from holomj.cli_common import emit_json, err_console, guard, out_console
+from holomj.cli_populate import populate_command
+from holomj.cli_validate import validate_command
 from holomj.errors import InputError
 from holomj.importers.detect import FORMATS
 
@@ -27,6 +29,8 @@ app = typer.Typer(
     add_completion=False,
 )
 app.add_typer(assets_app, name="assets")
+app.command("validate")(validate_command)
+app.command("populate")(populate_command)
 
 
 @app.command("compile")

@@ -11,7 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Literal
 
-from holomj.errors import FormatError, InputError, SpecError
+from holomj.errors import FormatError, InputError
 from holomj.importers.common import check_assets
 from holomj.importers.procthor import import_procthor
 from holomj.importers.result import ImportResult
@@ -19,6 +19,7 @@ from holomj.importers.scenedef import import_scenedef
 from holomj.library.store import AssetLibrary
 from holomj.spec.base import read_json, validate_model
 from holomj.spec.scene import SceneSpec
+from holomj.spec.scene_file import resolve_textures
 
 Format = Literal["holomj", "procthor", "scenedef"]
 FORMATS = ("holomj", "procthor", "holodeck", "scenedef")
@@ -87,21 +88,6 @@ def load_scene_input(path: Path, library: AssetLibrary, fmt: str | None = None) 
 def _load_holomj(data: Any, path: Path, library: AssetLibrary) -> ImportResult:
     source = str(path)
     scene = validate_model(SceneSpec, data, source)
-    materials = {}
-    changed = False
-    for name, material in scene.materials.items():
-        if material.texture and not Path(material.texture).is_absolute():
-            texture = (path.parent / material.texture).resolve()
-            if not texture.is_file():
-                raise SpecError(
-                    f"texture file {material.texture!r} not found",
-                    where=f"{source}: materials.{name}.texture",
-                    fix="texture paths are relative to the scene file's folder",
-                )
-            material = material.model_copy(update={"texture": str(texture)})
-            changed = True
-        materials[name] = material
-    if changed:
-        scene = scene.model_copy(update={"materials": materials})
+    scene = resolve_textures(scene, path.parent, source)
     check_assets(scene, library, source)
     return ImportResult(scene=scene, format="holomj")

@@ -19,8 +19,8 @@ from holomj.library.store import AssetLibrary
 from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.objects import Furniture
-from holomj.spec.base import read_json, validate_model
 from holomj.spec.scene import SceneSpec
+from holomj.spec.scene_file import read_scene_file
 
 
 @dataclass
@@ -53,8 +53,7 @@ def load_scene(
         raise FormatError("not found", where=str(path))
     folder = holomj_folder(path)
     if folder is not None:
-        scene_path = folder / SCENE_JSON
-        scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
+        scene = read_scene_file(folder / SCENE_JSON)
         library = library or AssetLibrary.open(folder / ASSETS_DIR)
         compiled = compile_scene(scene, library, furniture=furniture)
         objects = {o.id: compiled.model.body(names.object_body(o.id)).id for o in scene.objects}

@@ -1,0 +1,217 @@
+"""``holomj populate SCENE --on OBJECT --objects CAT[:N],...``: spawn-and-drop small objects.
+
+SCENE is a folder written by ``holomj compile``. The scene's own assets come from its
+``assets/`` library, the new objects' from ``--library`` (default: the default library). The
+populated scene is recompiled and written back into the same folder atomically, with
+``populate_report.json`` (every placement outcome; earlier runs are kept under ``runs``). Other
+top-level JSON reports are kept; anything else (renders, HTML reports) is stale once objects
+move in and is left out, which the report lists.
+
+Exit codes: 0 when every requested object was placed, 1 when some were not (the scene with the
+placed ones and the report are written all the same), 2 for bad input.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+
+from holomj.cli_common import emit_json, guard, out_console
+
+POPULATE_REPORT = "populate_report.json"
+_ITEM = re.compile(r"^\s*([A-Za-z0-9_][A-Za-z0-9_.:|+\- ]*?)\s*(?::\s*(\d+)\s*)?$")
+
+
+def parse_objects(text: str) -> list[tuple[str, int]]:
+    """``"mug:2, book, apple:3"`` -> ``[("mug", 2), ("book", 1), ("apple", 3)]``."""
+    from holomj.errors import InputError
+
+    requests = []
+    for item in text.split(","):
+        if not item.strip():
+            continue
+        name, count = item.strip(), 1
+        head, _, number = name.rpartition(":")
+        if head and number.strip().isdigit():
+            name, count = head, int(number)
+        name = name.strip()
+        if not _ITEM.match(name) or count < 1 or count > 1000:
+            raise InputError(
+                f"bad item {item.strip()!r}",
+                where="--objects",
+                fix="write CATEGORY[:COUNT],... with 1 <= COUNT <= 1000, e.g. 'mug:2,book'",
+            )
+        requests.append((name, count))
+    if not requests:
+        raise InputError("no objects requested", where="--objects", fix="e.g. 'mug:2,book'")
+    return requests
+
+
+@dataclass
+class PopulateFolderReport:
+    """What ``populate_folder`` did."""
+
+    folder: str
+    receptacle: str
+    requested: int
+    placed: int
+    report: dict[str, Any]
+
+    @property
+    def all_placed(self) -> bool:
+        """True when every requested object was placed."""
+        return self.placed == self.requested
+
+
+def populate_folder(
+    folder: Path,
+    receptacle_id: str,
+    requests: list[tuple[str, int]],
+    *,
+    seed: int = 0,
+    library_path: Path | None = None,
+    max_attempts: int = 20,
+) -> PopulateFolderReport:
+    """Populate the exported scene in ``folder`` and write it back (see the module docstring)."""
+    import numpy as np
+
+    from holomj.errors import InputError
+    from holomj.export.writer import ASSETS_DIR, SCENE_JSON, SCENE_XML, export_scene
+    from holomj.library.store import AssetLibrary
+    from holomj.mjcf.compiler import compile_scene
+    from holomj.physics.scene_io import holomj_folder
+    from holomj.physics.spawn import merge_libraries, populate
+    from holomj.spec.base import read_json, validate_model
+    from holomj.spec.scene import SceneSpec
+
+    folder = Path(folder)
+    if holomj_folder(folder) != folder or not folder.is_dir():
+        raise InputError(
+            "not a holomj scene folder (no scene.json and assets/library.json)",
+            where=str(folder),
+            fix="pass a folder written by 'holomj compile'",
+        )
+    scene_path = folder / SCENE_JSON
+    scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
+    own = AssetLibrary.open(folder / ASSETS_DIR)
+    libraries = [own]
+    if library_path is not None:
+        libraries.append(AssetLibrary.open(library_path))
+    library = merge_libraries(*libraries)
+    if max_attempts < 1 or max_attempts > 1000:
+        raise InputError("must lie in [1, 1000]", where="--max-attempts")
+    result = populate(
+        scene,
+        library,
+        receptacle_id,
+        requests,
+        np.random.default_rng(seed),
+        max_attempts=max_attempts,
+    )
+    compiled = compile_scene(result.scene, library)
+    kept, dropped = _other_entries(folder, {SCENE_XML, SCENE_JSON, ASSETS_DIR, POPULATE_REPORT})
+    run = {
+        "receptacle": receptacle_id,
+        "requests": [{"name": n, "count": c} for n, c in requests],
+        "seed": seed,
+        "max_attempts": max_attempts,
+        **result.to_dict(),
+    }
+    previous = _previous_runs(folder / POPULATE_REPORT)
+    report = {**run, "runs": [*previous, run], "dropped_files": dropped}
+    export_scene(compiled, folder, overwrite=True, extra_json={**kept, POPULATE_REPORT: report})
+    return PopulateFolderReport(
+        folder=str(folder),
+        receptacle=receptacle_id,
+        requested=run["requested"],
+        placed=run["placed"],
+        report=report,
+    )
+
+
+def _other_entries(folder: Path, skip: set[str]) -> tuple[dict[str, Any], list[str]]:
+    """Top-level JSON files to keep (name -> content) and the other entries left out."""
+    kept: dict[str, Any] = {}
+    dropped = []
+    for entry in sorted(folder.iterdir()):
+        if entry.name in skip:
+            continue
+        if entry.is_file() and entry.suffix == ".json":
+            try:
+                kept[entry.name] = json.loads(entry.read_text(encoding="utf-8"))
+                continue
+            except (OSError, ValueError):
+                pass
+        dropped.append(entry.name)
+    return kept, dropped
+
+
+def _previous_runs(path: Path) -> list[Any]:
+    try:
+        runs = json.loads(path.read_text(encoding="utf-8")).get("runs", [])
+    except (OSError, ValueError, AttributeError):
+        return []
+    return runs if isinstance(runs, list) else []
+
+
+def populate_command(
+    scene: Annotated[
+        Path, typer.Argument(metavar="SCENE", help="A folder written by 'holomj compile'.")
+    ],
+    on: Annotated[str, typer.Option("--on", help="Id of the receptacle object in the scene.")],
+    objects: Annotated[
+        str,
+        typer.Option(
+            "--objects", help="Categories or asset ids with counts: CAT[:N],... e.g. mug:2,book."
+        ),
+    ],
+    seed: Annotated[int, typer.Option("--seed", help="Random seed.")] = 0,
+    library: Annotated[
+        Path | None,
+        typer.Option(
+            "--library",
+            help="Library of the new objects (default: $HOLOMJ_HOME/library, built on first use).",
+        ),
+    ] = None,
+    max_attempts: Annotated[
+        int, typer.Option("--max-attempts", help="Candidate poses per object (1-1000).")
+    ] = 20,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """Drop small objects onto a receptacle of an exported scene and write it back."""
+    from holomj.cli_assets import resolve_library
+
+    requests = guard(lambda: parse_objects(objects))
+    library_root = resolve_library(library)
+    outcome = guard(
+        lambda: populate_folder(
+            scene,
+            on,
+            requests,
+            seed=seed,
+            library_path=library_root,
+            max_attempts=max_attempts,
+        )
+    )
+    if as_json:
+        emit_json(outcome.report)
+    else:
+        colour = "green" if outcome.all_placed else "yellow"
+        out_console.print(
+            f"[bold {colour}]placed {outcome.placed}/{outcome.requested}[/] on {on} "
+            f"-> {outcome.folder} (see {POPULATE_REPORT})"
+        )
+        for placement in outcome.report["placements"]:
+            if not placement["accepted"]:
+                out_console.print(
+                    f"  [yellow]not placed:[/] {placement['object_id']} ({placement['asset']}): "
+                    f"{placement['reason']} after {placement['attempts']} attempts",
+                    markup=True,
+                )
+    if not outcome.all_placed:
+        raise typer.Exit(code=1)

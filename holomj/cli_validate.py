@@ -1,0 +1,208 @@
+"""``holomj validate``: penetration audit, settle, stability report (and ``--repair``).
+
+Exit codes: 0 when the report was made (ok or not); with ``--strict``, 1 when it is not ok;
+2 for bad input.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import sys
+import tempfile
+from pathlib import Path
+from typing import Annotated, Literal
+
+import typer
+from rich.table import Table
+
+from holomj.cli_common import err_console, guard, out_console
+from holomj.errors import InputError
+from holomj.spec.report import StabilityReport, Thresholds
+
+_TABLE_ROWS = 60
+
+
+def validate_command(
+    scene: Annotated[
+        Path,
+        typer.Argument(
+            metavar="SCENE", help="A folder written by 'holomj compile', or an MJCF file."
+        ),
+    ],
+    json_out: Annotated[
+        Path | None,
+        typer.Option("--json", metavar="REPORT", help="Write the report as JSON ('-': stdout)."),
+    ] = None,
+    strict: Annotated[bool, typer.Option("--strict", help="Exit with 1 when not ok.")] = False,
+    repair: Annotated[
+        bool,
+        typer.Option(
+            "--repair",
+            help="Resolve small initial penetrations, settle and bake the settled poses back "
+            "into the folder (scene.json, scene.xml with a 'settled' keyframe).",
+        ),
+    ] = False,
+    furniture: Annotated[
+        str,
+        typer.Option(
+            "--furniture",
+            help="free: furniture gets free joints (a badly placed cabinet shows up); "
+            "static: it keeps still; as-is: the scene's own flags.",
+        ),
+    ] = "free",
+    tolerance_mm: Annotated[
+        float,
+        typer.Option("--tolerance-mm", min=0.0, max=100.0, help="Penetration allowed at t = 0."),
+    ] = 1.0,
+    monitor_s: Annotated[
+        float, typer.Option("--monitor-s", min=0.1, max=60.0, help="Monitor window, seconds.")
+    ] = 3.0,
+    settle_s: Annotated[
+        float,
+        typer.Option("--settle-s", min=0.0, max=60.0, help="Most time spent settling, seconds."),
+    ] = 5.0,
+    sleep: Annotated[
+        bool,
+        typer.Option(
+            "--sleep",
+            help="Let MuJoCo put resting bodies to sleep: 5-20x faster on big scenes, but "
+            "creep slower than MuJoCo's sleep tolerance goes unseen.",
+        ),
+    ] = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing.")] = False,
+) -> None:
+    """Audit a scene at t = 0, let it settle, and report every object's stability."""
+    from holomj.physics.settle import validate_path
+
+    if furniture not in ("free", "static", "as-is"):
+        guard(lambda: _bad_furniture(furniture))
+    thresholds = Thresholds(
+        tolerance_m=tolerance_mm / 1000.0, monitor_s=monitor_s, settle_cap_s=settle_s
+    )
+    mode: Literal["free", "static", "as-is"] = furniture  # type: ignore[assignment]
+    show = not quiet and json_out is None
+    with (
+        err_console.status(f"validating {scene}", spinner="dots")
+        if show and err_console.is_terminal
+        else contextlib.nullcontext()
+    ):
+        if repair:
+            report = guard(lambda: _repair_then_validate(scene, thresholds, mode, sleep))
+        else:
+            report = guard(lambda: validate_path(scene, thresholds, mode, sleep))
+    if json_out is not None:
+        guard(lambda: write_report(report, json_out))
+    if show:
+        print_summary(report)
+    elif not quiet and str(json_out) != "-":
+        status = "ok" if report.ok else "NOT ok"
+        err_console.print(f"{status}: {_headline(report)}; report -> {json_out}")
+    if strict and not report.ok:
+        raise typer.Exit(code=1)
+
+
+def _bad_furniture(value: str) -> None:
+    raise InputError(f"unknown --furniture {value!r}", fix="use free, static or as-is")
+
+
+def _repair_then_validate(
+    scene: Path,
+    thresholds: Thresholds,
+    furniture: Literal["free", "static", "as-is"],
+    sleep: bool,
+) -> StabilityReport:
+    from holomj.physics.repair import repair_folder
+    from holomj.physics.settle import validate_path
+
+    outcome = repair_folder(scene, thresholds, furniture, sleep)
+    report = validate_path(outcome.folder, thresholds, furniture, sleep)
+    return report.model_copy(update={"repaired": outcome.repaired, "unsaved": outcome.unsaved})
+
+
+def write_report(report: StabilityReport, path: Path) -> None:
+    """Write the report as JSON, atomically (temp file beside it, then rename); '-': stdout."""
+    text = json.dumps(report.model_dump(mode="json"), indent=2, sort_keys=True) + "\n"
+    if str(path) == "-":
+        sys.stdout.write(text)
+        return
+    path = Path(path)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8") as handle:
+                handle.write(text)
+            os.replace(tmp, path)
+        except BaseException:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+            raise
+    except OSError as err:
+        raise InputError(
+            f"cannot write the report: {err.strerror or err}", where=str(path)
+        ) from None
+
+
+def _headline(report: StabilityReport) -> str:
+    c = report.counts
+    return (
+        f"{c.get('stable', 0)}/{c.get('objects', 0)} objects stable, "
+        f"{c.get('penetrations', 0)} penetrations at t = 0, "
+        f"{sum(report.warnings.values())} MuJoCo warnings"
+    )
+
+
+def print_summary(report: StabilityReport) -> None:
+    """A table of the objects (unstable first) and a verdict."""
+    table = Table(title=f"stability of {report.source}")
+    table.add_column("object")
+    table.add_column("stable")
+    table.add_column("drift mm", justify="right")
+    table.add_column("rot °", justify="right")
+    table.add_column("support")
+    table.add_column("reasons")
+    rows = sorted(report.objects, key=lambda o: (o.stable, o.name))
+    for obj in rows[:_TABLE_ROWS]:
+        table.add_row(
+            obj.name,
+            "[green]yes[/]" if obj.stable else "[red]no[/]",
+            f"{obj.drift_m * 1000:.2f}",
+            f"{obj.rotation_deg:.2f}",
+            obj.support or "-",
+            "; ".join(obj.reasons),
+        )
+    out_console.print(table)
+    if len(rows) > _TABLE_ROWS:
+        out_console.print(f"  ... and {len(rows) - _TABLE_ROWS} more stable objects")
+    for pair in report.penetrations:
+        out_console.print(
+            f"  [red]penetration[/] {pair.a} / {pair.b}: {pair.depth_m * 1000:.1f} mm "
+            f"({pair.geom_a} / {pair.geom_b})"
+        )
+    for item in report.below_floor:
+        out_console.print(f"  [red]below floor[/] {item.name}: lowest z {item.value_m:.3f} m")
+    for item in report.outside_rooms:
+        out_console.print(f"  [red]outside rooms[/] {item.name}: {item.value_m:.3f} m away")
+    shown = [a for a in report.repaired if a.moved_m >= 0.001 or a.rotation_deg >= 1.0]
+    if len(shown) < len(report.repaired):
+        out_console.print(
+            f"  [cyan]repaired[/] {len(report.repaired) - len(shown)} objects moved less than "
+            "1 mm and 1° by settling"
+        )
+    for action in shown:
+        out_console.print(
+            f"  [cyan]repaired[/] {action.name}: moved {action.moved_m * 1000:.1f} mm, "
+            f"{action.rotation_deg:.2f}° ({action.why})"
+        )
+    for item in report.unsaved:
+        out_console.print(f"  [yellow]unsaved[/] {item.name}: {item.why}")
+    if report.warnings:
+        out_console.print(f"  [red]MuJoCo warnings:[/] {report.warnings}")
+    verdict = "[bold green]ok[/]" if report.ok else "[bold red]not ok[/]"
+    out_console.print(
+        f"{verdict}: {_headline(report)}; max penetration while monitoring "
+        f"{report.max_penetration_m * 1000:.2f} mm; {report.sim_time_s:.1f} s simulated in "
+        f"{report.wall_time_s:.1f} s ({report.realtime_factor:.1f}x real time)"
+    )

@@ -1,0 +1,326 @@
+"""``holomj validate --repair``: resolve small initial penetrations, settle, bake the result back.
+
+1. **Separate.** For every pair of colliders interpenetrating deeper than the tolerance and at
+   most ``repair_max_m``, one object is moved along the contact normal by the depth (plus half
+   a tolerance): the dynamic one of the pair, else the one resting on the other, else the one
+   listed later in the scene; structure and the floor never move. Repeat until no pair is
+   deeper than the tolerance. Deeper pairs are left alone and reported as unsaved.
+2. **Settle** the separated scene (furniture free, as validation does).
+3. **Bake**: every free object that ends stable gets its settled pose in ``scene.json``
+   (``yaw_deg``, or ``quat`` when it tilts more than 1°); unstable ones and those too deep to
+   separate keep their pose and are reported as unsaved. No object is ever deleted.
+4. **Re-export** the folder atomically from the new scene, with a keyframe ``settled`` in
+   ``scene.xml`` holding the joint positions the simulation settled to (all of them, unsaved
+   objects included: it is the state the physics reached); other files in the folder
+   (reports, renders) are carried over.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import shutil
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from holomj.atomic import replace_folder
+from holomj.errors import InputError
+from holomj.export.writer import ASSETS_DIR, SCENE_JSON, SCENE_XML, export_scene
+from holomj.mjcf.compiler import CompiledScene, compile_scene
+from holomj.mjcf.objects import Furniture
+from holomj.physics.audit import GeomOwners, find_overlaps
+from holomj.physics.scene_io import LoadedScene, load_scene
+from holomj.physics.settle import ObjectTrack, Validation, run_validation
+from holomj.spec.report import RepairAction, Thresholds, Unsaved
+from holomj.spec.scene import SceneObject, SceneSpec
+
+SETTLED_KEY = "settled"
+MAX_ROUNDS = 100
+TILT_DEG = 1.0  # below this tilt a settled pose is baked as a yaw
+
+
+@dataclass
+class RepairOutcome:
+    """What ``--repair`` did to the folder."""
+
+    folder: Path
+    scene: SceneSpec
+    repaired: list[RepairAction] = field(default_factory=list)
+    unsaved: list[Unsaved] = field(default_factory=list)
+
+
+def repair_folder(
+    path: Path,
+    thresholds: Thresholds | None = None,
+    furniture: Furniture = "free",
+    sleep: bool = False,
+) -> RepairOutcome:
+    """Repair the holomj folder at ``path`` in place (see the module docstring)."""
+    th = thresholds or Thresholds()
+    loaded = load_scene(Path(path), furniture=furniture)
+    if loaded.folder is None or loaded.scene is None or loaded.library is None:
+        raise InputError(
+            "--repair needs a holomj scene folder (scene.json and assets/)",
+            where=str(path),
+            fix="validate without --repair, or compile the scene with 'holomj compile'",
+        )
+    original = loaded.scene
+    separated, why, unsaved = separate(loaded, th)
+    compiled = compile_scene(separated, loaded.library, furniture=furniture)
+    objects = {o.id: compiled.model.body(f"{o.id}/body").id for o in separated.objects}
+    settled_scene = LoadedScene(
+        loaded.source, compiled.model, objects, separated, loaded.library, compiled, loaded.folder
+    )
+    validation = run_validation(settled_scene, th, furniture, sleep)
+    baked, unstable = bake(separated, validation, keep={u.name for u in unsaved})
+    unsaved += [
+        Unsaved(name=o.name, why="; ".join(o.reasons))
+        for o in validation.report.objects
+        if o.name in unstable and o.name not in {u.name for u in unsaved}
+    ]
+    final = compile_scene(baked, loaded.library)
+    add_settled_key(final, compiled.model, validation.result.data)
+    write_folder(final, loaded.folder)
+    repaired = moves(original, baked, why)
+    return RepairOutcome(loaded.folder, baked, repaired, sorted(unsaved, key=lambda u: u.name))
+
+
+def separate(loaded: LoadedScene, th: Thresholds) -> tuple[SceneSpec, dict[str, str], list]:
+    """Push interpenetrating objects apart; returns the new scene, why each object moved, and
+    the objects that could not be saved."""
+    model = loaded.model
+    scene = loaded.scene
+    if scene is None:
+        raise InputError("only holomj scenes can be repaired", where=str(loaded.source))
+    data = mujoco.MjData(model)
+    owners = GeomOwners(model, loaded.objects)
+    track = ObjectTrack.of(model, loaded.objects)
+    body_pos = model.body_pos.copy()  # restored below: the model is not ours to keep
+    free_adr = {}
+    for joint in range(model.njnt):
+        if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
+            free_adr[int(model.jnt_bodyid[joint])] = int(model.jnt_qposadr[joint])
+    index = {o.id: i for i, o in enumerate(scene.objects)}
+    supports = {o.id: o.support for o in scene.objects}
+    why: dict[str, str] = {}
+    unsaved: dict[str, str] = {}
+    skipped: set[tuple[int, int]] = set()
+    try:
+        for _ in range(MAX_ROUNDS):
+            mujoco.mj_kinematics(model, data)
+            overlaps = [
+                o
+                for o in find_overlaps(model, data, owners, th.tolerance_m)
+                if (o.geom1, o.geom2) not in skipped
+            ]
+            if not overlaps:
+                break
+            pushes: dict[int, np.ndarray] = {}
+            for overlap in overlaps:  # deepest first
+                mover, push = _mover(owners, track, overlap, index, supports)
+                if mover is None:
+                    continue
+                name = owners.names[mover]
+                other = owners.label(
+                    overlap.geom1 if owners.geom_owner[overlap.geom2] == mover else overlap.geom2
+                )
+                if overlap.depth > th.repair_max_m:
+                    skipped.add((overlap.geom1, overlap.geom2))
+                    unsaved.setdefault(
+                        name,
+                        f"penetrates {other} by {overlap.depth * 1000:.1f} mm "
+                        f"(repairs up to {th.repair_max_m * 1000:.0f} mm)",
+                    )
+                    continue
+                if mover not in pushes:
+                    pushes[mover] = push * (1.0 + 0.5 * th.tolerance_m / overlap.depth)
+                    why.setdefault(name, f"separated from {other}")
+            if not pushes:
+                break
+            for mover, push in pushes.items():
+                body = int(owners.object_bodies[mover])
+                if body in free_adr:
+                    data.qpos[free_adr[body] : free_adr[body] + 3] += push
+                else:
+                    model.body_pos[body] += push
+        else:
+            mujoco.mj_kinematics(model, data)
+            for overlap in find_overlaps(model, data, owners, th.tolerance_m):
+                for geom in (overlap.geom1, overlap.geom2):
+                    if owners.geom_owner[geom] >= 0:
+                        name = owners.names[owners.geom_owner[geom]]
+                        unsaved.setdefault(name, "still interpenetrating after repair")
+        mujoco.mj_kinematics(model, data)
+        positions = data.xpos[owners.object_bodies].copy()
+    finally:
+        model.body_pos[:] = body_pos
+    objects = []
+    for obj in scene.objects:
+        i = owners.names.index(obj.id)
+        if obj.id in why:
+            obj = obj.model_copy(update={"position": _clean_vec(positions[i])})
+        objects.append(obj)
+    unsaved_list = [Unsaved(name=k, why=v) for k, v in sorted(unsaved.items())]
+    return _rebuilt(scene, objects), why, unsaved_list
+
+
+def _mover(
+    owners: GeomOwners,
+    track: ObjectTrack,
+    overlap,
+    index: dict[str, int],
+    supports: dict[str, str | None],
+) -> tuple[int | None, np.ndarray]:
+    """Which object of an overlapping pair moves, and its push (world frame)."""
+    o1, o2 = int(owners.geom_owner[overlap.geom1]), int(owners.geom_owner[overlap.geom2])
+    if o1 < 0 and o2 < 0:
+        return None, overlap.push2
+    if o1 < 0:
+        return o2, overlap.push2
+    if o2 < 0:
+        return o1, -overlap.push2
+    n1, n2 = owners.names[o1], owners.names[o2]
+    d1, d2 = bool(track.dynamic[o1]), bool(track.dynamic[o2])
+    if d1 != d2:
+        return (o1, -overlap.push2) if d1 else (o2, overlap.push2)
+    if supports.get(n1) == n2:
+        return o1, -overlap.push2
+    if supports.get(n2) == n1:
+        return o2, overlap.push2
+    later_is_2 = index.get(n2, 0) >= index.get(n1, 0)
+    return (o2, overlap.push2) if later_is_2 else (o1, -overlap.push2)
+
+
+def bake(
+    scene: SceneSpec, validation: Validation, keep: set[str] | frozenset[str] = frozenset()
+) -> tuple[SceneSpec, set[str]]:
+    """The scene with the settled pose of every stable free object (except those in ``keep``,
+    which keep their pose); and the names of the unstable ones."""
+    data = validation.result.data
+    owners = validation.track.owners
+    reports = {o.name: o for o in validation.report.objects}
+    unstable = {name for name, o in reports.items() if not o.stable}
+    objects = []
+    for obj in scene.objects:
+        i = owners.names.index(obj.id)
+        report = reports[obj.id]
+        if report.dynamic and report.stable and obj.id not in keep:
+            body = int(owners.object_bodies[i])
+            obj = obj.model_copy(update=_pose_fields(data.xpos[body], data.xquat[body]))
+        objects.append(obj)
+    return _rebuilt(scene, objects), unstable
+
+
+def _pose_fields(pos: np.ndarray, quat: np.ndarray) -> dict:
+    """``position`` and ``yaw_deg`` (or ``quat`` when tilted) of a settled body."""
+    quat = np.asarray(quat, dtype=float) / np.linalg.norm(quat)
+    rot = np.zeros(9)
+    mujoco.mju_quat2Mat(rot, quat)
+    rot = rot.reshape(3, 3)
+    tilt = math.degrees(math.acos(min(1.0, max(-1.0, rot[2, 2]))))
+    yaw = math.degrees(math.atan2(rot[1, 0], rot[0, 0]))
+    fields: dict = {"position": _clean_vec(pos), "yaw_deg": round(yaw, 4)}
+    if tilt > TILT_DEG:
+        if quat[0] < 0:
+            quat = -quat
+        fields["quat"] = tuple(round(float(q), 8) for q in quat)
+    else:
+        fields["quat"] = None
+    return fields
+
+
+def _clean_vec(values: np.ndarray) -> tuple[float, float, float]:
+    x, y, z = (round(float(v), 6) + 0.0 for v in values)
+    return (x, y, z)
+
+
+def _rebuilt(scene: SceneSpec, objects: list[SceneObject]) -> SceneSpec:
+    return SceneSpec.model_validate({**scene.model_dump(), "objects": objects})
+
+
+def add_settled_key(compiled: CompiledScene, settled: mujoco.MjModel, data: mujoco.MjData) -> None:
+    """Add the keyframe ``settled`` to ``compiled`` (joints matched by name) and recompile."""
+    model = compiled.model
+    qpos = model.qpos0.copy()
+    for joint in range(model.njnt):
+        name = model.joint(joint).name
+        try:
+            source = settled.joint(name)
+        except KeyError:
+            continue
+        width = _qpos_width(model.jnt_type[joint])
+        if _qpos_width(settled.jnt_type[source.id]) != width:
+            continue
+        start, src = model.jnt_qposadr[joint], settled.jnt_qposadr[source.id]
+        qpos[start : start + width] = data.qpos[src : src + width]
+    compiled.spec.add_key(name=SETTLED_KEY, qpos=[float(q) for q in qpos], time=0.0)
+    compiled.model = compiled.spec.compile()
+
+
+def _qpos_width(kind: int) -> int:
+    return {
+        mujoco.mjtJoint.mjJNT_FREE: 7,
+        mujoco.mjtJoint.mjJNT_BALL: 4,
+    }.get(mujoco.mjtJoint(kind), 1)
+
+
+def write_folder(compiled: CompiledScene, folder: Path) -> None:
+    """Re-export ``folder`` atomically, keeping its other files (reports, renders)."""
+    folder = Path(folder).absolute()
+    staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.repair-", dir=folder.parent))
+    try:
+        fresh = export_scene(compiled, staging / "out")
+        for item in sorted(folder.iterdir()):
+            if item.name in (SCENE_XML, SCENE_JSON, ASSETS_DIR):
+                continue
+            target = fresh / item.name
+            if item.is_dir():
+                shutil.copytree(item, target, symlinks=True)
+            else:
+                shutil.copy2(item, target, follow_symlinks=False)
+
+        def fill(tmp: Path) -> None:
+            for item in sorted(fresh.iterdir()):
+                os.replace(item, tmp / item.name)
+
+        replace_folder(folder, fill)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+
+
+def moves(before: SceneSpec, after: SceneSpec, why: dict[str, str]) -> list[RepairAction]:
+    """Every object whose pose changed between the two scenes, and by how much."""
+    actions = []
+    for old, new in zip(before.objects, after.objects):
+        delta = np.array(new.position) - np.array(old.position)
+        angle = _angle_deg(_quat_of(old), _quat_of(new))
+        if np.linalg.norm(delta) < 1e-6 and angle < 1e-3:
+            continue
+        reason = why.get(old.id)
+        reason = f"{reason}, then settled" if reason else "settled"
+        actions.append(
+            RepairAction(
+                name=old.id,
+                moved_m=round(float(np.linalg.norm(delta)), 6),
+                translation=_clean_vec(delta),
+                rotation_deg=round(angle, 4),
+                why=reason,
+            )
+        )
+    return actions
+
+
+def _quat_of(obj: SceneObject) -> np.ndarray:
+    if obj.quat is not None:
+        return np.array(obj.quat)
+    half = math.radians(obj.yaw_deg) / 2
+    return np.array([math.cos(half), 0.0, 0.0, math.sin(half)])
+
+
+def _angle_deg(q1: np.ndarray, q2: np.ndarray) -> float:
+    dot = min(1.0, abs(float(np.dot(q1, q2))))
+    return math.degrees(2.0 * math.acos(dot))

@@ -1,0 +1,104 @@
+"""``holomj populate`` through typer's runner: exit codes, the rewritten folder, the report."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from holomj.cli import app
+from holomj.cli_populate import parse_objects
+from holomj.errors import InputError
+from holomj.library import AssetLibrary
+from holomj.physics.scene_io import load_scene
+from holomj.physics.smoke import simulate
+from tests.physics.spawn_helpers import receptacle_scene
+
+
+@pytest.fixture
+def folder(tmp_path: Path, default_library: AssetLibrary) -> Path:
+    """An exported one-room scene with a static dining table ``rec``."""
+    scene_json = tmp_path / "scene_in.json"
+    scene = receptacle_scene("dining_table_000")
+    scene_json.write_text(scene.model_dump_json(exclude_none=True))
+    out = tmp_path / "out"
+    result = CliRunner().invoke(
+        app,
+        ["compile", str(scene_json), "-o", str(out), "-q", "--library", str(default_library.root)],
+    )
+    assert result.exit_code == 0, result.output
+    assert (out / "import_report.json").is_file()
+    return out
+
+
+def invoke(folder: Path, library: AssetLibrary, *args: str):
+    return CliRunner().invoke(app, ["populate", str(folder), "--library", str(library.root), *args])
+
+
+def test_populate_writes_back_a_loadable_scene(folder: Path, default_library: AssetLibrary):
+    result = invoke(folder, default_library, "--on", "rec", "--objects", "mug:2,book,apple:2")
+    assert result.exit_code == 0, result.output
+    assert "placed 5/5" in result.stdout
+    report = json.loads((folder / "populate_report.json").read_text())
+    assert report["placed"] == 5 and report["requested"] == 5 and len(report["runs"]) == 1
+    assert all(p["accepted"] for p in report["placements"])
+    assert (folder / "import_report.json").is_file()  # other reports are kept
+    loaded = load_scene(folder, furniture="as-is")
+    assert len(loaded.scene.objects) == 6
+    assert simulate(loaded.model, 1.0).warnings == {}
+    # a second run adds to the scene and to the report's history
+    again = invoke(folder, default_library, "--on", "rec", "--objects", "cup", "--seed", "3")
+    assert again.exit_code == 0, again.output
+    report = json.loads((folder / "populate_report.json").read_text())
+    assert len(report["runs"]) == 2
+    assert len(load_scene(folder).scene.objects) == 7
+
+
+def test_populate_json_and_partial_failure(folder: Path, default_library: AssetLibrary):
+    result = invoke(
+        folder, default_library, "--on", "rec", "--objects", "bottle:60", "--max-attempts", "2",
+        "--json",
+    )  # fmt: skip
+    assert result.exit_code == 1, result.output
+    report = json.loads(result.stdout)
+    assert 0 < report["placed"] < 60
+    failed = [p for p in report["placements"] if not p["accepted"]]
+    assert failed and all(p["attempts"] <= 2 and p["reason"] for p in failed)
+    loaded = load_scene(folder, furniture="as-is")
+    assert len(loaded.scene.objects) == 1 + report["placed"]
+    assert simulate(loaded.model, 1.0).warnings == {}
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--on", "tabel", "--objects", "mug"], "objects: rec"),
+        (["--on", "recc", "--objects", "mug"], "did you mean: rec"),
+        (["--on", "rec", "--objects", "mug:2,,:3"], "--objects"),
+        (["--on", "rec", "--objects", "unicorn:2"], "unicorn"),
+        (["--on", "rec", "--objects", "mug:0"], "--objects"),
+    ],
+)
+def test_bad_input_exits_2(folder: Path, default_library: AssetLibrary, args, message) -> None:
+    before = (folder / "scene.json").read_text()
+    result = invoke(folder, default_library, *args)
+    assert result.exit_code == 2, result.output
+    assert message in result.output
+    assert (folder / "scene.json").read_text() == before
+    assert not (folder / "populate_report.json").exists()
+
+
+def test_not_a_scene_folder_exits_2(tmp_path: Path, default_library: AssetLibrary) -> None:
+    result = invoke(tmp_path, default_library, "--on", "rec", "--objects", "mug")
+    assert result.exit_code == 2
+    assert "not a holomj scene folder" in result.output
+
+
+def test_parse_objects() -> None:
+    assert parse_objects("mug:2, book ,apple:3") == [("mug", 2), ("book", 1), ("apple", 3)]
+    assert parse_objects("builtin:box") == [("builtin:box", 1)]
+    for bad in ("", " , ", "mug:0", ":3", "mug:2000"):
+        with pytest.raises(InputError):
+            parse_objects(bad)

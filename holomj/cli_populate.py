@@ -86,8 +86,7 @@ def populate_folder(
     from holomj.mjcf.compiler import compile_scene
     from holomj.physics.scene_io import holomj_folder
     from holomj.physics.spawn import merge_libraries, populate
-    from holomj.spec.base import read_json, validate_model
-    from holomj.spec.scene import SceneSpec
+    from holomj.spec.scene_file import read_scene_file
 
     folder = Path(folder)
     if holomj_folder(folder) != folder or not folder.is_dir():
@@ -96,8 +95,7 @@ def populate_folder(
             where=str(folder),
             fix="pass a folder written by 'holomj compile'",
         )
-    scene_path = folder / SCENE_JSON
-    scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
+    scene = read_scene_file(folder / SCENE_JSON)
     own = AssetLibrary.open(folder / ASSETS_DIR)
     libraries = [own]
     if library_path is not None:

@@ -10,6 +10,7 @@ from shapely.geometry import Polygon
 
 from holomj.errors import FormatError
 from holomj.export.writer import SCENE_JSON, SCENE_XML
+from holomj.mjcf.loading import load_model_file
 from holomj.spec.base import read_json, validate_model
 from holomj.spec.scene import SceneSpec
 
@@ -54,13 +55,5 @@ def folder_summary(out: Path) -> dict[str, Any]:
         )
     scene_path = out / SCENE_JSON
     scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
-    xml_path = out / SCENE_XML
-    if not xml_path.is_file():
-        raise FormatError("file not found", where=str(xml_path))
-    try:
-        model = mujoco.MjModel.from_xml_path(str(xml_path))
-    except ValueError as err:
-        raise FormatError(
-            f"MuJoCo cannot load it: {' '.join(str(err).split())}", where=str(xml_path)
-        ) from None
+    model = load_model_file(out / SCENE_XML)
     return {"folder": str(out), **scene_summary(scene), "model": model_summary(model)}

@@ -18,6 +18,7 @@ from holomj.export.writer import ASSETS_DIR, SCENE_JSON, SCENE_XML
 from holomj.library.store import AssetLibrary
 from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene, compile_scene
+from holomj.mjcf.loading import load_model_file
 from holomj.mjcf.objects import Furniture
 from holomj.spec.scene import SceneSpec
 from holomj.spec.scene_file import read_scene_file
@@ -64,12 +65,7 @@ def load_scene(
             where=str(path),
             fix="pass a folder written by 'holomj compile' or an MJCF file",
         )
-    try:
-        model = mujoco.MjModel.from_xml_path(str(path))
-    except ValueError as err:
-        raise FormatError(
-            f"MuJoCo cannot load it: {' '.join(str(err).split())}", where=str(path)
-        ) from None
+    model = load_model_file(path)
     objects = {}
     for joint in range(model.njnt):
         if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:

@@ -1,0 +1,1 @@
+"""Pure geometry: floor plans, doors and windows, furniture under constraints, wall objects."""

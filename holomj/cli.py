@@ -145,7 +145,7 @@ def info_command(
 
 @app.command("schema")
 def schema_command(
-    kind: Annotated[str, typer.Argument(help="scene, asset or library.")] = "scene",
+    kind: Annotated[str, typer.Argument(help="scene, asset, library or report.")] = "scene",
     out: Annotated[
         Path | None, typer.Option("--out", "-o", help="Write to this file instead of stdout.")
     ] = None,

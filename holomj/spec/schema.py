@@ -8,12 +8,14 @@ from pydantic import BaseModel
 
 from holomj.errors import InputError
 from holomj.spec.assets import AssetMeta, LibraryIndex
+from holomj.spec.report import StabilityReport
 from holomj.spec.scene import SceneSpec
 
 SCHEMAS: dict[str, type[BaseModel]] = {
     "scene": SceneSpec,
     "asset": AssetMeta,
     "library": LibraryIndex,
+    "report": StabilityReport,
 }
 
 

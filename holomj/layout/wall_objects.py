@@ -1,0 +1,488 @@
+"""Wall objects (paintings, mirrors, shelves, wall cabinets, TVs, clocks) and ceiling lights.
+
+A wall object hangs on the interior face of one of its room's walls: interior walls are centred
+on the room edge, so their face is ``wall_thickness / 2`` into the room; exterior walls grow
+outwards, so their face is the room edge itself. The object's back touches the face and its
+front (+X) points into the room; its position is the centre of its footprint at its bottom, as
+for every SceneObject.
+
+Heights (``WALL_HEIGHTS``): the default z of a kind, given as the height of its centre or of its
+bottom. ``height_m`` in a request overrides it (always the bottom). An object ``above`` a floor
+object is centred over it, on the wall nearest to it, at least ``ABOVE_GAP_M`` above its top (a
+TV sits exactly that far above its stand).
+
+============  ===================
+kind          default height
+============  ===================
+painting      centre at 1.5 m
+mirror        centre at 1.4 m
+clock         centre at 1.8 m
+wall_cabinet  bottom at 1.45 m
+shelf         bottom at 1.3 m
+television    centre at 1.2 m
+whiteboard    centre at 1.4 m
+other         centre at 1.5 m
+============  ===================
+
+Nothing may overlap, in the wall plane, a door with its frame (up to the header, and the whole
+height for ``open`` doors), a window with its frame, another wall object (checked in 3D, so
+objects on two walls meeting at a corner are caught), or floor furniture near the wall that
+rises above the object's bottom.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Annotated
+
+import numpy as np
+from pydantic import Field
+from shapely.geometry import Point, Polygon
+
+from holomj.errors import SpecError
+from holomj.layout.floorplan import normal_type
+from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
+from holomj.spec.scene import Door, Light, Room, SceneObject, Window
+from holomj.spec.walls import Wall, find_wall_for_opening
+
+# (reference, metres): reference "centre" or "bottom".
+WALL_HEIGHTS: dict[str, tuple[str, float]] = {
+    "painting": ("centre", 1.5),
+    "mirror": ("centre", 1.4),
+    "clock": ("centre", 1.8),
+    "wall_cabinet": ("bottom", 1.45),
+    "shelf": ("bottom", 1.3),
+    "television": ("centre", 1.2),
+    "whiteboard": ("centre", 1.4),
+}
+DEFAULT_WALL_HEIGHT = ("centre", 1.5)
+ABOVE_GAP_M = 0.1  # between a floor object's top and the wall object above it
+OPENING_MARGIN_M = 0.05  # frames stick out of the opening's span by about this
+END_MARGIN_M = 0.1  # from the ends of a wall segment (a crossing interior wall's half thickness)
+CEILING_GAP_M = 0.05  # a wall object's top stays this far below the wall top
+NEAR_WALL_M = 0.3  # furniture closer than object depth + this to the face counts as in front
+FREE_STEP_M = 0.05
+OBJECT_GAP_M = 0.02  # between two wall objects
+
+
+class WallObjectRequest(FrozenModel):
+    """A wall object to place: size (width along the wall, depth, height), where and how high."""
+
+    id: Identifier
+    size: tuple[PositiveFloat, PositiveFloat, PositiveFloat]
+    kind: str = Field(default="painting", max_length=64)
+    above: Identifier | None = None
+    height_m: Annotated[float, Field(ge=0.0, le=20.0)] | None = Field(
+        default=None, description="Height of the object's bottom; default by kind."
+    )
+
+
+@dataclass(frozen=True)
+class FloorItem:
+    """A floor object as wall placement sees it: its footprint and its height."""
+
+    id: str
+    footprint: Polygon
+    height: float
+
+
+@dataclass(frozen=True)
+class WallPlacement:
+    """Where a wall object goes: position of its bottom centre, yaw, and the wall it hangs on."""
+
+    id: str
+    x: float
+    y: float
+    z: float
+    yaw_deg: float
+    wall_id: str
+    room: str
+
+    def scene_object(
+        self, asset: str, scale: float | tuple[float, float, float] = 1.0
+    ) -> SceneObject:
+        """A static SceneObject for this placement."""
+        return SceneObject(
+            id=self.id,
+            asset=asset,
+            position=(self.x, self.y, self.z),
+            yaw_deg=self.yaw_deg,
+            scale=scale,
+            static=True,
+            room=self.room,
+        )
+
+
+@dataclass(frozen=True)
+class Unplaced:
+    """A wall object that found no place, and why."""
+
+    id: str
+    reason: str
+
+
+@dataclass(frozen=True)
+class _Face:
+    wall: Wall
+    offset: float  # distance of the face from the wall line, into the room
+    inward: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class _Placed:
+    footprint: Polygon
+    z0: float
+    z1: float
+    wall_id: str
+    t0: float
+    t1: float
+
+
+def _faces(room: Room, walls: Sequence[Wall], wall_thickness: float) -> list[_Face]:
+    faces = []
+    for wall in walls:
+        if room.id not in wall.rooms:
+            continue
+        nx, ny = wall.normal
+        if wall.exterior:
+            inward = (-wall.outward[0], -wall.outward[1])
+            offset = 0.0
+        else:
+            inward = (nx, ny) if wall.left_room == room.id else (-nx, -ny)
+            offset = wall_thickness / 2
+        faces.append(_Face(wall, offset, inward))
+    return faces
+
+
+def default_bottom(kind: str, height: float) -> float:
+    """Default z of the bottom of a wall object of this kind and height."""
+    ref, value = WALL_HEIGHTS.get(normal_type(kind), DEFAULT_WALL_HEIGHT)
+    return value - height / 2 if ref == "centre" else value
+
+
+def _blocks(
+    face: _Face,
+    doors: Sequence[Door],
+    windows: Sequence[Window],
+    walls: Sequence[Wall],
+    floor: Sequence[FloorItem],
+    depth: float,
+    wall_height: float,
+    skip: str | None,
+) -> list[tuple[float, float, float, float, str]]:
+    """Rectangles (t0, t1, z0, z1, what) in the face's wall plane that a wall object must avoid."""
+    out = []
+    for opening in [*doors, *windows]:
+        width = opening.effective_width if isinstance(opening, Door) else opening.width
+        try:
+            wall, t = find_wall_for_opening(walls, opening.rooms, opening.position, width)
+        except SpecError:  # an opening elsewhere in the scene: not on this wall
+            continue
+        if wall.id != face.wall.id:
+            continue
+        if isinstance(opening, Door):
+            z0 = 0.0
+            z1 = wall_height if opening.kind == "open" else opening.height + OPENING_MARGIN_M
+            what = f"door {opening.id}"
+        else:
+            z0 = opening.base_height - OPENING_MARGIN_M
+            z1 = opening.base_height + opening.height + OPENING_MARGIN_M
+            what = f"window {opening.id}"
+        half = width / 2 + OPENING_MARGIN_M
+        out.append((t - half, t + half, z0, z1, what))
+    # Furniture standing near the face, projected onto it.
+    near = _face_band(face, depth + NEAR_WALL_M)
+    for item in floor:
+        if item.id == skip or not item.footprint.intersects(near):
+            continue
+        ts = [face.wall.locate(p)[0] for p in item.footprint.exterior.coords]
+        out.append((min(ts), max(ts), 0.0, item.height, f"floor object {item.id}"))
+    return out
+
+
+def _face_band(face: _Face, reach: float) -> Polygon:
+    """The strip of floor in front of the face, ``reach`` deep."""
+    wall = face.wall
+    ix, iy = face.inward
+    a = _face_point(face, 0.0, 0.0)
+    b = _face_point(face, wall.length, 0.0)
+    return Polygon(
+        [a, b, (b[0] + ix * reach, b[1] + iy * reach), (a[0] + ix * reach, a[1] + iy * reach)]
+    )
+
+
+def _face_point(face: _Face, t: float, out: float) -> tuple[float, float]:
+    x, y = face.wall.point_at(t)
+    ix, iy = face.inward
+    d = face.offset + out
+    return (x + ix * d, y + iy * d)
+
+
+def _footprint(face: _Face, t: float, width: float, depth: float) -> Polygon:
+    return Polygon(
+        [
+            _face_point(face, t - width / 2, 0.0),
+            _face_point(face, t + width / 2, 0.0),
+            _face_point(face, t + width / 2, depth),
+            _face_point(face, t - width / 2, depth),
+        ]
+    )
+
+
+def _clear(
+    t0: float,
+    t1: float,
+    z0: float,
+    z1: float,
+    blocks: Sequence[tuple[float, float, float, float, str]],
+) -> str | None:
+    for b0, b1, c0, c1, what in blocks:
+        if t0 < b1 - 1e-9 and b0 < t1 - 1e-9 and z0 < c1 - 1e-9 and c0 < z1 - 1e-9:
+            return what
+    return None
+
+
+def _hits_placed(foot: Polygon, z0: float, z1: float, placed: Sequence[_Placed]) -> bool:
+    for other in placed:
+        overlap_z = z0 < other.z1 + OBJECT_GAP_M and other.z0 < z1 + OBJECT_GAP_M
+        if overlap_z and foot.distance(other.footprint) < OBJECT_GAP_M:
+            return True
+    return False
+
+
+def place_wall_objects(
+    room: Room,
+    walls: Sequence[Wall],
+    doors: Sequence[Door],
+    windows: Sequence[Window],
+    floor_objects: Sequence[FloorItem | tuple[str, Polygon, float]],
+    requests: Sequence[WallObjectRequest],
+    rng: np.random.Generator,
+    *,
+    wall_height: float = 2.7,
+    wall_thickness: float = 0.1,
+) -> tuple[list[WallPlacement], list[Unplaced]]:
+    """Hang the requested objects on the walls of ``room``; report the ones that do not fit.
+
+    ``walls`` are the scene's walls (``derive_walls``); ``floor_objects`` are (id, footprint
+    polygon, height) of the floor furniture already placed. Requests are handled in order; a
+    free object goes to the middle of the widest free stretch at its height (ties broken by
+    ``rng``), an object ``above`` a floor object is centred over it or reported.
+    """
+    floor = [
+        f if isinstance(f, FloorItem) else FloorItem(f[0], Polygon(f[1]), float(f[2]))
+        for f in floor_objects
+    ]
+    by_id = {f.id: f for f in floor}
+    faces = _faces(room, walls, wall_thickness)
+    placed: list[_Placed] = []
+    result: list[WallPlacement] = []
+    unplaced: list[Unplaced] = []
+    for req in requests:
+        width, depth, height = req.size
+        if req.above is not None and req.above not in by_id:
+            unplaced.append(Unplaced(req.id, f"unknown floor object {req.above!r} to hang above"))
+            continue
+        base = req.height_m if req.height_m is not None else default_bottom(req.kind, height)
+        if req.above is not None:
+            top = by_id[req.above].height + ABOVE_GAP_M
+            if normal_type(req.kind) == "television" and req.height_m is None:
+                base = top
+            base = max(base, top)
+        base = max(base, 0.0)
+        z1 = base + height
+        if z1 > wall_height - CEILING_GAP_M + 1e-9:
+            unplaced.append(
+                Unplaced(
+                    req.id, f"top at {z1:.2f} m would reach the wall top ({wall_height:.2f} m)"
+                )
+            )
+            continue
+        if req.above is not None:
+            outcome = _place_above(
+                req,
+                by_id[req.above],
+                faces,
+                doors,
+                windows,
+                walls,
+                floor,
+                placed,
+                base,
+                wall_height,
+            )
+        else:
+            outcome = _place_free(
+                req, faces, doors, windows, walls, floor, placed, base, wall_height, rng
+            )
+        if isinstance(outcome, str):
+            unplaced.append(Unplaced(req.id, outcome))
+            continue
+        face, t = outcome
+        foot = _footprint(face, t, width, depth)
+        placed.append(_Placed(foot, base, z1, face.wall.id, t - width / 2, t + width / 2))
+        x, y = _face_point(face, t, depth / 2)
+        yaw = math.degrees(math.atan2(face.inward[1], face.inward[0]))
+        result.append(
+            WallPlacement(
+                id=req.id,
+                x=round(x, 4),
+                y=round(y, 4),
+                z=round(base, 4),
+                yaw_deg=round(yaw, 4) + 0.0,
+                wall_id=face.wall.id,
+                room=room.id,
+            )
+        )
+    return result, unplaced
+
+
+def _fits_on(face: _Face, t: float, width: float) -> bool:
+    return (
+        t - width / 2 >= END_MARGIN_M - 1e-9
+        and t + width / 2 <= face.wall.length - END_MARGIN_M + 1e-9
+    )
+
+
+def _place_above(
+    req: WallObjectRequest,
+    item: FloorItem,
+    faces: Sequence[_Face],
+    doors: Sequence[Door],
+    windows: Sequence[Window],
+    walls: Sequence[Wall],
+    floor: Sequence[FloorItem],
+    placed: Sequence[_Placed],
+    base: float,
+    wall_height: float,
+) -> tuple[_Face, float] | str:
+    width, depth, height = req.size
+    centre = item.footprint.centroid
+    ranked = []
+    for face in faces:
+        t, _ = face.wall.locate((centre.x, centre.y))
+        if not _fits_on(face, t, width):
+            continue
+        band = _face_band(face, 10.0)
+        if not band.contains(centre):
+            continue
+        ranked.append((_dist_to_face(face, centre), face, t))
+    if not ranked:
+        return f"no wall of the room lies behind {item.id!r} with room for {width:.2f} m"
+    ranked.sort(key=lambda r: (r[0], r[1].wall.id))
+    _, face, t = ranked[0]
+    blocks = _blocks(face, doors, windows, walls, floor, depth, wall_height, item.id)
+    hit = _clear(t - width / 2, t + width / 2, base, base + height, blocks)
+    if hit is not None:
+        return f"the wall above {item.id!r} is taken by {hit}"
+    if _hits_placed(_footprint(face, t, width, depth), base, base + height, placed):
+        return f"the wall above {item.id!r} is taken by another wall object"
+    return face, t
+
+
+def _dist_to_face(face: _Face, point: Point) -> float:
+    _, off = face.wall.locate((point.x, point.y))
+    return abs(off)
+
+
+def _place_free(
+    req: WallObjectRequest,
+    faces: Sequence[_Face],
+    doors: Sequence[Door],
+    windows: Sequence[Window],
+    walls: Sequence[Wall],
+    floor: Sequence[FloorItem],
+    placed: Sequence[_Placed],
+    base: float,
+    wall_height: float,
+    rng: np.random.Generator,
+) -> tuple[_Face, float] | str:
+    width, depth, height = req.size
+    z0, z1 = base, base + height
+    stretches = []
+    for face in faces:
+        blocks = _blocks(face, doors, windows, walls, floor, depth, wall_height, None)
+        spans = [(b0, b1) for b0, b1, c0, c1, _ in blocks if z0 < c1 and c0 < z1]
+        spans += [
+            (p.t0 - OBJECT_GAP_M, p.t1 + OBJECT_GAP_M)
+            for p in placed
+            if p.wall_id == face.wall.id and z0 < p.z1 + OBJECT_GAP_M and p.z0 < z1 + OBJECT_GAP_M
+        ]
+        spans.sort()
+        cursor = END_MARGIN_M
+        end = face.wall.length - END_MARGIN_M
+        for b0, b1 in spans + [(end, end)]:
+            if min(b0, end) - cursor >= width - 1e-9:
+                stretches.append((cursor, min(b0, end), face))
+            cursor = max(cursor, b1)
+    if not stretches:
+        return f"no free stretch of wall {width:.2f} m wide at {z0:.2f}-{z1:.2f} m"
+    jitter = rng.uniform(0.0, 0.1, size=len(stretches))
+    order = sorted(
+        range(len(stretches)), key=lambda i: -(stretches[i][1] - stretches[i][0] + float(jitter[i]))
+    )
+    for i in order:
+        a, b, face = stretches[i]
+        candidates = [(a + b) / 2]
+        # Slide from the middle towards both ends if another wall object (a corner) is in the way.
+        steps = int((b - a - width) / 2 / FREE_STEP_M)
+        for k in range(1, steps + 1):
+            candidates += [(a + b) / 2 - k * FREE_STEP_M, (a + b) / 2 + k * FREE_STEP_M]
+        for t in candidates:
+            if _hits_placed(_footprint(face, t, width, depth), z0, z1, placed):
+                continue
+            return face, round(t, 3) if _fits_within(round(t, 3), width, a, b) else t
+    return f"every free stretch of wall {width:.2f} m wide is taken by other wall objects"
+
+
+def _fits_within(t: float, width: float, a: float, b: float) -> bool:
+    return t - width / 2 >= a - 1e-9 and t + width / 2 <= b + 1e-9
+
+
+# ---------------------------------------------------------------------------------------------
+# Ceiling lights
+
+BIG_ROOM_M2 = 25.0
+LIGHT_BELOW_CEILING_M = 0.3
+
+
+def ceiling_lights(rooms: Sequence[Room], wall_height: float) -> list[Light]:
+    """Point lights under the ceiling: one per room at its centroid, a 2 x 2 grid in rooms over
+    25 m². Total energy grows with the area (0.2 + 0.012 per m², at most 0.8), shared by the
+    room's lights."""
+    lights: list[Light] = []
+    z = max(wall_height - LIGHT_BELOW_CEILING_M, 0.5)
+    for room in rooms:
+        poly = Polygon(room.polygon)
+        total = min(0.8, 0.2 + 0.012 * poly.area)
+        if poly.area > BIG_ROOM_M2:
+            x0, y0, x1, y1 = poly.bounds
+            points = [
+                (x0 + (x1 - x0) * fx, y0 + (y1 - y0) * fy)
+                for fy in (0.25, 0.75)
+                for fx in (0.25, 0.75)
+            ]
+            points = [_inside(poly, p) for p in points]
+        else:
+            points = [_inside(poly, (poly.centroid.x, poly.centroid.y))]
+        for k, (x, y) in enumerate(points):
+            lights.append(
+                Light(
+                    id=f"light_{room.id}" if len(points) == 1 else f"light_{room.id}_{k}",
+                    kind="point",
+                    position=(round(x, 4), round(y, 4), round(z, 4)),
+                    energy=round(total / len(points), 4),
+                    color=(1.0, 0.96, 0.9),
+                )
+            )
+    return lights
+
+
+def _inside(poly: Polygon, point: tuple[float, float]) -> tuple[float, float]:
+    p = Point(point)
+    if poly.contains(p):
+        return point
+    q = poly.representative_point()
+    return (q.x, q.y)

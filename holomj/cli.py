@@ -16,6 +16,7 @@ from rich.table import Table
 
 from holomj.cli_assets import assets_app, resolve_library
 from holomj.cli_common import emit_json, err_console, guard, out_console
+from holomj.cli_layout import layout_app
 from holomj.cli_populate import populate_command
 from holomj.cli_validate import validate_command
 from holomj.errors import InputError
@@ -29,6 +30,7 @@ app = typer.Typer(
     add_completion=False,
 )
 app.add_typer(assets_app, name="assets")
+app.add_typer(layout_app, name="layout")
 app.command("validate")(validate_command)
 app.command("populate")(populate_command)
 

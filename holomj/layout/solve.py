@@ -1,0 +1,351 @@
+"""Solve one room's floor layout and check the answer independently.
+
+:func:`solve_room` runs the greedy solver (the whole answer with ``solver="greedy"``, else the
+warm start), then CP-SAT with the rest of the time budget. If CP-SAT's layout cuts the doors
+apart, a walkway is reserved and CP-SAT runs again; if it finds nothing, the greedy layout is
+used and the result says so. Objects CP-SAT left out are offered to the greedy inserter.
+
+The post-check does not trust either solver: it rebuilds every footprint in metres and tests
+overlaps and clearance, containment in the room polygon, door zones, windows against tall
+objects, the space in front of each object and the walkable path between doors with shapely and
+the occupancy grid, and evaluates every constraint with the geometric predicates. An object that
+fails a hard test is taken out and listed as unplaced with the reason: nothing is dropped
+silently.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Literal
+
+import numpy as np
+from pydantic import BaseModel, Field
+from shapely.geometry import box
+
+from holomj.errors import InputError
+from holomj.layout import geometry as geo
+from holomj.layout.room_problem import PreparedRoom, RoomProblem
+from holomj.layout.solver_cpsat import corridor_obstacles, solve_cpsat
+from holomj.layout.solver_greedy import insert_unplaced, satisfied_weight, solve_greedy
+
+SOLVERS = ("cpsat", "greedy")
+Pose = tuple[int, int, int]
+
+
+class Placement(BaseModel):
+    """Where an object goes: centre of its footprint (metres) and yaw (degrees, CCW)."""
+
+    x: float
+    y: float
+    yaw_deg: float
+    width: float = Field(description="Left-right size in metres.")
+    depth: float = Field(description="Front-back size in metres.")
+
+
+class ConstraintReport(BaseModel):
+    """One constraint and whether the final layout satisfies it."""
+
+    text: str
+    object: str
+    kind: str
+    target: str | None
+    weight: float
+    satisfied: bool
+    detail: str
+
+
+class UnplacedObject(BaseModel):
+    """An object the layout does not contain, and why."""
+
+    id: str
+    reason: str
+
+
+class HardChecks(BaseModel):
+    """The post-check of the hard rules on the final layout (lists name offending objects)."""
+
+    overlaps: list[str] = Field(default_factory=list)
+    clearance: list[str] = Field(default_factory=list)
+    outside_room: list[str] = Field(default_factory=list)
+    door_zones: list[str] = Field(default_factory=list)
+    windows: list[str] = Field(default_factory=list)
+    facing_wall: list[str] = Field(default_factory=list)
+    walkable: bool | None = Field(
+        default=None, description="None when not applicable (fewer than two doors)."
+    )
+    walkable_detail: str = ""
+
+    @property
+    def ok(self) -> bool:
+        """True when no hard rule is broken."""
+        return not (
+            self.overlaps
+            or self.clearance
+            or self.outside_room
+            or self.door_zones
+            or self.windows
+            or self.facing_wall
+            or self.walkable is False
+        )
+
+
+class LayoutResult(BaseModel):
+    """The answer for one room."""
+
+    room_id: str
+    placements: dict[str, Placement]
+    constraints: list[ConstraintReport]
+    satisfied: int
+    total: int
+    unplaced: list[UnplacedObject]
+    solve_time_s: float
+    solver_used: str
+    solver_status: str
+    hard_checks: HardChecks
+    warnings: list[str]
+
+    def to_dict(self) -> dict:
+        """JSON-ready data."""
+        return self.model_dump(mode="json")
+
+
+def solve_room(
+    problem: RoomProblem,
+    *,
+    solver: Literal["cpsat", "greedy"] = "cpsat",
+    time_limit_s: float = 1.0,
+    rng: np.random.Generator | None = None,
+    deterministic: bool = True,
+    workers: int = 2,
+) -> LayoutResult:
+    """Place the problem's objects; see the module docstring for the strategy.
+
+    ``rng`` drives tie-breaking in the greedy solver and CP-SAT's seed (default: seed 0).
+    """
+    if solver not in SOLVERS:
+        raise InputError(
+            f"unknown solver {solver!r}", where="solver", fix=f"use one of: {', '.join(SOLVERS)}"
+        )
+    if not time_limit_s > 0:
+        raise InputError("time limit must be positive", where="time_limit_s")
+    start = time.perf_counter()
+    rng = rng if rng is not None else np.random.default_rng(0)
+    prep = PreparedRoom(problem)
+    warnings = list(prep.warnings)
+    if not prep.items:
+        return _report(prep, {}, {}, start, "none", "no objects", warnings)
+    greedy_share = 1.0 if solver == "greedy" else 0.3
+    greedy = solve_greedy(prep, rng, time_limit_s * greedy_share)
+    poses: dict[int, Pose] = greedy.poses
+    reasons: dict[int, str] = dict(greedy.unplaced)
+    used, status = "greedy", f"{greedy.attempts} attempt(s), {greedy.backtracks} backtrack(s)"
+    if solver == "cpsat":
+        seed = int(rng.integers(0, 2**31 - 1))
+        found, status = _run_cpsat(
+            prep, greedy.poses, start, time_limit_s, seed, deterministic, workers
+        )
+        if found is None:
+            used = "greedy"
+            warnings.append(f"CP-SAT found no usable layout ({status}); used the greedy one")
+        else:
+            missing = [i for i in range(len(prep.items)) if i not in found]
+            found, extra_reasons = insert_unplaced(prep, found, missing, rng)
+            g = prep.grid
+            cp_key = (len(found), satisfied_weight(prep, _metres(found, g)))
+            gr_key = (len(greedy.poses), satisfied_weight(prep, _metres(greedy.poses, g)))
+            if cp_key >= gr_key:
+                poses, reasons, used = found, extra_reasons, "cpsat"
+            else:
+                used = "greedy"
+                warnings.append(
+                    f"the greedy layout beat CP-SAT's within the time limit "
+                    f"({gr_key[0]} placed, weight {gr_key[1]:g} vs {cp_key[0]}, {cp_key[1]:g})"
+                )
+    poses, reasons = _enforce_hard(prep, poses, reasons, warnings)
+    return _report(prep, poses, reasons, start, used, status, warnings)
+
+
+def _metres(poses: dict[int, Pose], g: float) -> dict[int, tuple[float, float, int]]:
+    return {i: (x * g, y * g, k) for i, (x, y, k) in poses.items()}
+
+
+def _walk_ok(prep: PreparedRoom, poses: dict[int, Pose]) -> bool:
+    g = prep.grid
+    rects = [prep.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()]
+    return prep.walk.check(rects).ok
+
+
+def _run_cpsat(
+    prep: PreparedRoom,
+    hint: dict[int, Pose],
+    start: float,
+    time_limit_s: float,
+    seed: int,
+    deterministic: bool,
+    workers: int,
+) -> tuple[dict[int, Pose] | None, str]:
+    remaining = max(time_limit_s - (time.perf_counter() - start), 0.05)
+    share = 0.6 if prep.walk.applicable else 1.0
+    out = solve_cpsat(
+        prep,
+        time_limit_s=remaining * share,
+        seed=seed,
+        hint=hint,
+        workers=workers,
+        deterministic=deterministic,
+    )
+    if not out.found:
+        return None, out.status
+    if not prep.walk.applicable or _walk_ok(prep, out.poses):
+        return out.poses, out.status
+    corridor = corridor_obstacles(prep, out.poses)
+    remaining = max(time_limit_s - (time.perf_counter() - start), 0.1)
+    again = solve_cpsat(
+        prep,
+        time_limit_s=remaining,
+        seed=seed,
+        hint=hint,
+        extra_obstacles=corridor,
+        workers=workers,
+        deterministic=deterministic,
+    )
+    if again.found and _walk_ok(prep, again.poses):
+        return again.poses, f"{again.status} (with a reserved walkway)"
+    return None, "layouts blocked the walkable path between the doors"
+
+
+# --------------------------------------------------------------------------- post-check
+
+
+def hard_checks(prep: PreparedRoom, poses: dict[int, Pose]) -> tuple[HardChecks, dict[int, str]]:
+    """Test every hard rule in metres; also return, per offending object, the first problem."""
+    g = prep.grid
+    s = prep.settings
+    checks = HardChecks()
+    blame: dict[int, str] = {}
+    rects = {i: prep.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()}
+    ids = sorted(rects)
+    room = prep.room.buffer(1e-7)
+    for n, i in enumerate(ids):
+        a = prep.items[i].id
+        for j in ids[n + 1 :]:
+            gx, gy = geo.rect_gaps(rects[i], rects[j])
+            b = prep.items[j].id
+            if gx < -1e-7 and gy < -1e-7:
+                checks.overlaps.append(f"{a} overlaps {b}")
+                blame.setdefault(j, f"overlaps {a}")
+            elif max(gx, gy) < s.clearance_m - 1e-6:
+                checks.clearance.append(f"{a} and {b} are {max(gx, gy):.3f} m apart")
+                blame.setdefault(j, f"closer than {s.clearance_m:g} m to {a}")
+        shape = box(*rects[i])
+        if not room.covers(shape):
+            checks.outside_room.append(a)
+            blame.setdefault(i, "not inside the room")
+        for door, zone in zip(prep.problem.doors, prep.door_zones):
+            if shape.intersection(zone).area > 1e-9:
+                checks.door_zones.append(f"{a} in front of {door.id}")
+                blame.setdefault(i, f"in the keep-out zone of {door.id}")
+        if prep.items[i].tall:
+            for window, zone in zip(prep.problem.windows, prep.window_zones):
+                if shape.intersection(zone).area > 1e-9:
+                    checks.windows.append(f"{a} blocks {window.id}")
+                    blame.setdefault(i, f"taller than the sill of {window.id} and in front of it")
+        x, y, k = poses[i]
+        if not geo.front_is_clear(
+            x * g, y * g, k, prep.items[i].depth, prep.room, s.front_clearance_m
+        ):
+            checks.facing_wall.append(a)
+            blame.setdefault(i, f"faces a wall closer than {s.front_clearance_m:g} m")
+    walk = prep.walk.check(list(rects.values()))
+    checks.walkable = walk.ok if walk.applicable else None
+    checks.walkable_detail = walk.detail
+    return checks, blame
+
+
+def _enforce_hard(
+    prep: PreparedRoom,
+    poses: dict[int, Pose],
+    reasons: dict[int, str],
+    warnings: list[str],
+) -> tuple[dict[int, Pose], dict[int, str]]:
+    """Take out objects that break a hard rule (a solver bug if it ever happens), with reasons."""
+    poses, reasons = dict(poses), dict(reasons)
+    for _ in range(len(poses) + 1):
+        checks, blame = hard_checks(prep, poses)
+        if checks.ok:
+            break
+        if blame:
+            i = max(blame)
+            reasons[i] = f"removed by the post-check: {blame[i]}"
+        else:  # only the walkway is blocked: take out the smallest object that reopens it
+            candidates = sorted(poses, key=lambda j: (prep.items[j].area, j))
+            i = next(
+                (
+                    j
+                    for j in candidates
+                    if _walk_ok(prep, {q: p for q, p in poses.items() if q != j})
+                ),
+                candidates[0],
+            )
+            reasons[i] = "removed by the post-check: it blocked the walkable path between doors"
+        warnings.append(f"{prep.items[i].id}: {reasons[i]}")
+        del poses[i]
+    return poses, reasons
+
+
+def _report(
+    prep: PreparedRoom,
+    poses: dict[int, Pose],
+    reasons: dict[int, str],
+    start: float,
+    used: str,
+    status: str,
+    warnings: list[str],
+) -> LayoutResult:
+    g = prep.grid
+    metres = _metres(poses, g)
+    placements = {
+        prep.items[i].id: Placement(
+            x=round(x, 6),
+            y=round(y, 6),
+            yaw_deg=90.0 * k,
+            width=prep.items[i].width,
+            depth=prep.items[i].depth,
+        )
+        for i, (x, y, k) in sorted(metres.items())
+    }
+    reports = []
+    for c in prep.constraints:
+        ok, detail = prep.evaluate(c, metres)
+        reports.append(
+            ConstraintReport(
+                text=c.text,
+                object=c.object,
+                kind=c.kind,
+                target=c.target,
+                weight=c.weight,
+                satisfied=ok,
+                detail=detail,
+            )
+        )
+    unplaced = [
+        UnplacedObject(
+            id=item.id, reason=reasons.get(item.index, "not placed (no reason recorded)")
+        )
+        for item in prep.items
+        if item.index not in poses
+    ]
+    checks, _ = hard_checks(prep, poses)
+    return LayoutResult(
+        room_id=prep.problem.room_id,
+        placements=placements,
+        constraints=reports,
+        satisfied=sum(r.satisfied for r in reports),
+        total=len(reports),
+        unplaced=unplaced,
+        solve_time_s=round(time.perf_counter() - start, 4),
+        solver_used=used,
+        solver_status=status,
+        hard_checks=checks,
+        warnings=warnings,
+    )

@@ -1,0 +1,455 @@
+"""Fast greedy placement with bounded backtracking: the fallback and the CP-SAT warm start.
+
+Objects go in dependency order (targets before the objects that refer to them, larger first).
+For each object every grid position and quarter turn is tested at once with summed-area tables
+over the occupancy raster (walls, door zones, windows for tall objects, objects placed so far),
+candidates are scored by the weight of the constraints they satisfy with what is already placed,
+and the best one that keeps the doors connected is taken. When an object finds no room, up to
+``max_backtracks`` times a recently placed object is moved to one of its alternative positions
+to make room; if that fails too, the object is reported unplaced with the reason. A few restarts
+that put the unplaced objects first run while time is left; the best attempt wins.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from holomj.layout import geometry as geo
+from holomj.layout.room_problem import PreparedRoom
+
+Pose = tuple[int, int, int]  # grid units x, y and yaw index
+NEAR_PREFERRED_M = 0.4  # tie-break: a 'near' gap up to this is best (as in the CP-SAT model)
+
+
+@dataclass
+class GreedyOutcome:
+    """Poses in grid units, unplaced objects with reasons, and search statistics."""
+
+    poses: dict[int, Pose] = field(default_factory=dict)
+    unplaced: dict[int, str] = field(default_factory=dict)
+    score: float = 0.0
+    attempts: int = 0
+    backtracks: int = 0
+
+
+def dependency_order(prep: PreparedRoom) -> list[int]:
+    """Targets before the objects that refer to them; among the ready ones, largest first."""
+    deps: dict[int, set[int]] = {item.index: set() for item in prep.items}
+    for c in prep.constraints:
+        if c.target is not None:
+            deps[prep.index[c.object]].add(prep.index[c.target])
+    order: list[int] = []
+    left = set(deps)
+    while left:
+        ready = [i for i in left if not (deps[i] & left)]
+        pool = ready or list(left)  # a cycle: break it at the largest object
+        pick = max(pool, key=lambda i: (prep.items[i].area, -i))
+        order.append(pick)
+        left.remove(pick)
+    return order
+
+
+class Occupancy:
+    """The cells taken by placed objects' collision boxes, and the poses."""
+
+    def __init__(self, prep: PreparedRoom) -> None:
+        self.prep = prep
+        self.mask = np.zeros_like(prep.wall_block)
+        self.poses: dict[int, Pose] = {}
+
+    def _cells(self, i: int, pose: Pose) -> tuple[slice, slice]:
+        prep = self.prep
+        x, y, k = pose
+        hx, hy = prep.coll_half(i, k)
+        return (
+            slice(x - hx - prep.i0, x + hx - prep.i0),
+            slice(y - hy - prep.j0, y + hy - prep.j0),
+        )
+
+    def place(self, i: int, pose: Pose) -> None:
+        """Mark object ``i`` at ``pose``."""
+        self.mask[self._cells(i, pose)] = True
+        self.poses[i] = pose
+
+    def remove(self, i: int) -> Pose:
+        """Unmark object ``i`` (collision boxes never share cells) and return its pose."""
+        pose = self.poses.pop(i)
+        self.mask[self._cells(i, pose)] = False
+        return pose
+
+    def metres(self) -> dict[int, tuple[float, float, int]]:
+        """Poses in metres."""
+        g = self.prep.grid
+        return {i: (x * g, y * g, k) for i, (x, y, k) in self.poses.items()}
+
+    def rects(self, extra: dict[int, Pose] | None = None) -> list[tuple[float, ...]]:
+        """Footprints (metres) of the placed objects plus ``extra``."""
+        g = self.prep.grid
+        poses = dict(self.poses)
+        poses.update(extra or {})
+        return [self.prep.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()]
+
+
+def _strip_ranges(
+    x: np.ndarray, y: np.ndarray, k: int, hx: int, hy: int, length: int
+) -> tuple[np.ndarray, ...]:
+    """Cell ranges (units) of the strip ``length`` deep in front of a collision box, 2 wide."""
+    if k == 0:
+        return x + hx, y - 1, x + hx + length, y + 1
+    if k == 1:
+        return x - 1, y + hy, x + 1, y + hy + length
+    if k == 2:
+        return x - hx - length, y - 1, x - hx, y + 1
+    return x - 1, y - hy - length, x + 1, y - hy
+
+
+class CandidateFinder:
+    """Valid poses of one object given the occupancy, with constraint scores."""
+
+    def __init__(self, prep: PreparedRoom, rng: np.random.Generator) -> None:
+        self.prep = prep
+        self.rng = rng
+        self.walls_sat = geo.SummedArea(prep.wall_block)
+        self.front_len = prep.units_up(prep.settings.front_clearance_m)
+        self.by_object: dict[int, list] = {i.index: [] for i in prep.items}
+        self.by_target: dict[int, list] = {i.index: [] for i in prep.items}
+        for c in prep.constraints:
+            self.by_object[prep.index[c.object]].append(c)
+            if c.target is not None:
+                self.by_target[prep.index[c.target]].append(c)
+
+    def blocked_sat(self, i: int, occ: np.ndarray | None) -> geo.SummedArea:
+        """Summed-area table of the cells object ``i`` may not cover."""
+        prep = self.prep
+        blocked = prep.wall_block | prep.door_block
+        if prep.items[i].tall:
+            blocked = blocked | prep.window_block
+        if occ is not None:
+            blocked = blocked | occ
+        return geo.SummedArea(blocked)
+
+    def valid_mask(
+        self, i: int, k: int, occ: np.ndarray | None, sat: geo.SummedArea | None = None
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """Grid-unit centres ``(X, Y)`` and the mask of valid ones at yaw index ``k``."""
+        prep = self.prep
+        hx, hy = prep.coll_half(i, k)
+        nx, ny = prep.raster.nx, prep.raster.ny
+        xs = np.arange(prep.i0 + hx, prep.i0 + nx - hx + 1)
+        ys = np.arange(prep.j0 + hy, prep.j0 + ny - hy + 1)
+        if xs.size == 0 or ys.size == 0:
+            return None
+        x, y = np.meshgrid(xs, ys, indexing="ij")
+        sat = sat if sat is not None else self.blocked_sat(i, occ)
+        i0, j0 = prep.i0, prep.j0
+        ok = sat.count(x - hx - i0, y - hy - j0, x + hx - i0, y + hy - j0) == 0
+        if self.front_len > 0:
+            a0, b0, a1, b1 = _strip_ranges(x, y, k, hx, hy, self.front_len)
+            ok &= self.walls_sat.count(a0 - i0, b0 - j0, a1 - i0, b1 - j0) == 0
+        return x, y, ok
+
+    def scores(self, i: int, k: int, x: np.ndarray, y: np.ndarray, occ: Occupancy) -> np.ndarray:
+        """Weight of the constraints satisfied at each centre with the objects placed so far."""
+        prep = self.prep
+        g = prep.grid
+        item = prep.items[i]
+        xm, ym = x * g, y * g
+        score = np.zeros(x.shape)
+        has_global = False
+        for c in self.by_object[i]:
+            if c.kind == "edge":
+                has_global = True
+                score += c.weight * geo.edge_holds(
+                    xm, ym, k, item.size, prep.walls, prep.thresholds.edge_tolerance
+                )
+            elif c.kind == "middle":
+                has_global = True
+                score += c.weight * self.middle_ok(i, k, x, y)
+            else:
+                j = prep.index[c.target]
+                if j not in occ.poses:
+                    continue
+                xt, yt, kt = occ.poses[j]
+                score += self._relation(
+                    c, (xm, ym, k, item.size), (xt * g, yt * g, kt, prep.items[j].size)
+                )
+        for c in self.by_target[i]:
+            a = prep.index[c.object]
+            if a not in occ.poses:
+                continue
+            xa, ya, ka = occ.poses[a]
+            score += self._relation(
+                c, (xa * g, ya * g, ka, prep.items[a].size), (xm, ym, k, item.size)
+            )
+        if not has_global:
+            # Holodeck's default: an object without a global constraint prefers a wall.
+            score += 0.01 * geo.edge_holds(
+                xm, ym, k, item.size, prep.walls, prep.thresholds.edge_tolerance
+            )
+        return score
+
+    def _relation(self, c, a: tuple, t: tuple) -> np.ndarray:
+        """Weight where the relation holds, plus a tie-break for near: within 0.4 m is best."""
+        xa, ya, ka, size_a = a
+        xt, yt, kt, size_t = t
+        holds = geo.relation_holds(
+            c.kind, xa, ya, ka, size_a, xt, yt, kt, size_t, self.prep.thresholds
+        )
+        score = c.weight * holds
+        if c.kind == "near":
+            hxa, hya = geo.half_extents(size_a[0], size_a[1], ka)
+            hxt, hyt = geo.half_extents(size_t[0], size_t[1], kt)
+            gx = np.maximum(np.abs(xa - xt) - hxa - hxt, 0.0)
+            gy = np.maximum(np.abs(ya - yt) - hya - hyt, 0.0)
+            near = self.prep.thresholds.near
+            excess = np.maximum(gx + gy - NEAR_PREFERRED_M, 0.0)
+            closeness = np.clip(1.0 - excess / max(near - NEAR_PREFERRED_M, 1e-6), 0.0, 1.0)
+            score = score + 0.01 * holds * closeness
+        return score
+
+    def middle_ok(self, i: int, k: int, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """The footprint grown by the middle gap stays inside the room (raster test)."""
+        prep = self.prep
+        item = prep.items[i]
+        hx, hy = geo.half_extents(item.width, item.depth, k)
+        gap = prep.thresholds.middle_gap
+        mx, my = prep.units_up(hx + gap), prep.units_up(hy + gap)
+        i0, j0 = prep.i0, prep.j0
+        return self.walls_sat.count(x - mx - i0, y - my - j0, x + mx - i0, y + my - j0) == 0
+
+    def ranked(self, i: int, occ: Occupancy, limit: int = 400) -> list[tuple[float, Pose]]:
+        """The best ``limit`` valid poses of object ``i``, best first."""
+        found: list[tuple[np.ndarray, np.ndarray, np.ndarray, int]] = []
+        sat = self.blocked_sat(i, occ.mask)
+        for k in range(4):
+            res = self.valid_mask(i, k, occ.mask, sat)
+            if res is None:
+                continue
+            x, y, ok = res
+            if not ok.any():
+                continue
+            xv, yv = x[ok], y[ok]
+            sc = self.scores(i, k, xv, yv, occ) + self.rng.random(xv.shape) * 1e-4
+            found.append((sc, xv, yv, np.full(xv.shape, k)))
+        if not found:
+            return []
+        sc = np.concatenate([f[0] for f in found])
+        xs = np.concatenate([f[1] for f in found])
+        ys = np.concatenate([f[2] for f in found])
+        ks = np.concatenate([f[3] for f in found])
+        top = np.argpartition(-sc, limit)[:limit] if sc.size > limit else np.arange(sc.size)
+        top = top[np.argsort(-sc[top], kind="stable")]
+        return [(float(sc[t]), (int(xs[t]), int(ys[t]), int(ks[t]))) for t in top]
+
+    def fits_empty(self, i: int) -> bool:
+        """Whether object ``i`` has any valid pose in the empty room."""
+        sat = self.blocked_sat(i, None)
+        for k in range(4):
+            res = self.valid_mask(i, k, None, sat)
+            if res is not None and res[2].any():
+                return True
+        return False
+
+
+def _diverse(ranked: list[tuple[float, Pose]], count: int, min_units: int) -> list[Pose]:
+    chosen: list[Pose] = []
+    for _, pose in ranked:
+        if all(
+            pose[2] != c[2] or abs(pose[0] - c[0]) + abs(pose[1] - c[1]) >= min_units
+            for c in chosen
+        ):
+            chosen.append(pose)
+            if len(chosen) == count:
+                break
+    return chosen
+
+
+def solve_greedy(
+    prep: PreparedRoom,
+    rng: np.random.Generator,
+    time_limit_s: float = 1.0,
+    *,
+    max_backtracks: int = 20,
+    max_restarts: int = 3,
+    path_tries: int = 40,
+) -> GreedyOutcome:
+    """Place every object it can; never drops one without a reason."""
+    start = time.perf_counter()
+    deadline = start + time_limit_s
+    finder = CandidateFinder(prep, rng)
+    order = dependency_order(prep)
+    best: GreedyOutcome | None = None
+    for attempt in range(max_restarts + 1):
+        outcome = _attempt(prep, finder, order, deadline, max_backtracks, path_tries)
+        outcome.attempts = attempt + 1
+        if best is None or (len(outcome.poses), outcome.score) > (len(best.poses), best.score):
+            best = outcome
+        if not outcome.unplaced or time.perf_counter() > deadline:
+            break
+        failed = [i for i in order if i in outcome.unplaced]
+        order = failed + [i for i in order if i not in outcome.unplaced]
+    assert best is not None
+    return best
+
+
+def _attempt(
+    prep: PreparedRoom,
+    finder: CandidateFinder,
+    order: list[int],
+    deadline: float,
+    max_backtracks: int,
+    path_tries: int,
+) -> GreedyOutcome:
+    occ = Occupancy(prep)
+    alternatives: dict[int, list[Pose]] = {}
+    placed_order: list[int] = []
+    outcome = GreedyOutcome()
+    spread = max(prep.units_up(0.5), 1)
+    for i in order:
+        pose, why = _best_pose(prep, finder, occ, i, path_tries, alternatives, spread)
+        if pose is None and outcome.backtracks < max_backtracks:
+            pose = _backtrack(
+                prep,
+                finder,
+                occ,
+                i,
+                placed_order,
+                alternatives,
+                outcome,
+                max_backtracks,
+                path_tries,
+                deadline,
+                spread,
+            )
+        if pose is None:
+            if why == "full" and not finder.fits_empty(i):
+                why = "fit"
+            outcome.unplaced[i] = _reason(prep, i, why, occ)
+            continue
+        occ.place(i, pose)
+        placed_order.append(i)
+    outcome.poses = dict(occ.poses)
+    outcome.score = satisfied_weight(prep, occ.metres())
+    return outcome
+
+
+def _best_pose(
+    prep: PreparedRoom,
+    finder: CandidateFinder,
+    occ: Occupancy,
+    i: int,
+    path_tries: int,
+    alternatives: dict[int, list[Pose]],
+    spread: int,
+) -> tuple[Pose | None, str]:
+    ranked = finder.ranked(i, occ)
+    if not ranked:
+        return None, "full"
+    alternatives[i] = _diverse(ranked, 4, spread)
+    if not prep.walk.applicable:
+        return ranked[0][1], ""
+    g = prep.grid
+    for _, pose in ranked[:path_tries]:
+        rect = prep.footprint(i, pose[0] * g, pose[1] * g, pose[2])
+        if prep.walk.check([*occ.rects(), rect]).ok:
+            return pose, ""
+    return None, "path"
+
+
+def _backtrack(
+    prep: PreparedRoom,
+    finder: CandidateFinder,
+    occ: Occupancy,
+    i: int,
+    placed_order: list[int],
+    alternatives: dict[int, list[Pose]],
+    outcome: GreedyOutcome,
+    max_backtracks: int,
+    path_tries: int,
+    deadline: float,
+    spread: int,
+) -> Pose | None:
+    """Move one of the last few placed objects to an alternative pose to make room for ``i``."""
+    for j in reversed(placed_order[-4:]):
+        for alt in alternatives.get(j, [])[1:]:
+            if outcome.backtracks >= max_backtracks or time.perf_counter() > deadline:
+                return None
+            outcome.backtracks += 1
+            old = occ.remove(j)
+            if not _pose_free(prep, finder, occ, j, alt):
+                occ.place(j, old)
+                continue
+            occ.place(j, alt)
+            pose, _ = _best_pose(prep, finder, occ, i, path_tries, {}, spread)
+            if pose is not None:
+                return pose
+            occ.remove(j)
+            occ.place(j, old)
+    return None
+
+
+def _pose_free(
+    prep: PreparedRoom, finder: CandidateFinder, occ: Occupancy, i: int, pose: Pose
+) -> bool:
+    x, y, k = pose
+    res = finder.valid_mask(i, k, occ.mask)
+    if res is None:
+        return False
+    xs, ys, ok = res
+    hit = (xs == x) & (ys == y) & ok
+    if not hit.any():
+        return False
+    if prep.walk.applicable:
+        g = prep.grid
+        return prep.walk.check([*occ.rects(), prep.footprint(i, x * g, y * g, k)]).ok
+    return True
+
+
+def _reason(prep: PreparedRoom, i: int, why: str, occ: Occupancy) -> str:
+    item = prep.items[i]
+    size = f"{item.width:.2f} x {item.depth:.2f} m"
+    if why == "fit":
+        extra = (
+            " and the windows (it is taller than a sill)" if item.tall and prep.window_zones else ""
+        )
+        return (
+            f"does not fit in the room in any orientation ({size}) clear of the walls, "
+            f"the door zones{extra}"
+        )
+    if why == "path":
+        return "every free position left would block the walkable path between the doors"
+    placed = [prep.items[j].id for j in occ.poses]
+    shown = ", ".join(placed[:6]) + (f" and {len(placed) - 6} more" if len(placed) > 6 else "")
+    return f"no room left ({size}) after placing {shown or 'nothing'}"
+
+
+def satisfied_weight(prep: PreparedRoom, poses_m: dict[int, tuple[float, float, int]]) -> float:
+    """Total weight of the constraints that hold for these poses (metres)."""
+    return sum(c.weight for c in prep.constraints if prep.evaluate(c, poses_m)[0])
+
+
+def insert_unplaced(
+    prep: PreparedRoom,
+    poses: dict[int, Pose],
+    missing: list[int],
+    rng: np.random.Generator,
+) -> tuple[dict[int, Pose], dict[int, str]]:
+    """Greedily add ``missing`` objects into a finished layout (no object is moved)."""
+    finder = CandidateFinder(prep, rng)
+    occ = Occupancy(prep)
+    for i, pose in poses.items():
+        occ.place(i, pose)
+    reasons: dict[int, str] = {}
+    spread = max(prep.units_up(0.5), 1)
+    for i in missing:
+        pose, why = _best_pose(prep, finder, occ, i, 40, {}, spread)
+        if pose is None:
+            if why == "full" and not finder.fits_empty(i):
+                why = "fit"
+            reasons[i] = _reason(prep, i, why, occ)
+            continue
+        occ.place(i, pose)
+    return dict(occ.poses), reasons

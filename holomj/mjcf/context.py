@@ -29,6 +29,12 @@ class BuildContext:
             raise KeyError(f"default class {name!r} missing from the base template")
         return found
 
+    def extent(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """(min x, max x), (min y, max y) over all room polygons."""
+        xs = [p[0] for room in self.scene.rooms for p in room.polygon]
+        ys = [p[1] for room in self.scene.rooms for p in room.polygon]
+        return (min(xs), max(xs)), (min(ys), max(ys))
+
     def add_file(self, relative: str, data: bytes) -> str:
         """Register a file for ``assets/``; the same path must always carry the same bytes."""
         previous = self.files.get(relative)

@@ -7,7 +7,6 @@ from dataclasses import dataclass
 
 import mujoco
 import numpy as np
-from shapely.geometry import Polygon
 
 from holomj.mjcf import names
 from holomj.mjcf.context import BuildContext
@@ -22,15 +21,14 @@ _MIN_PIECE = 1e-3  # wall pieces thinner or shorter than this are dropped
 
 def add_ground(ctx: BuildContext) -> None:
     """One collision plane at z = 0 under the whole house (floors are visual slabs)."""
-    xs = [p[0] for room in ctx.scene.rooms for p in room.polygon]
-    ys = [p[1] for room in ctx.scene.rooms for p in room.polygon]
+    (x0, x1), (y0, y1) = ctx.extent()
     margin = 5.0
     ctx.spec.worldbody.add_geom(
         name=names.ground(),
         default=ctx.default("ground"),
         type=mujoco.mjtGeom.mjGEOM_PLANE,
-        pos=clean([(min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2, 0.0]),
-        size=clean([(max(xs) - min(xs)) / 2 + margin, (max(ys) - min(ys)) / 2 + margin, 0.1]),
+        pos=clean([(x0 + x1) / 2, (y0 + y1) / 2, 0.0]),
+        size=clean([(x1 - x0) / 2 + margin, (y1 - y0) / 2 + margin, 0.1]),
     )
 
 
@@ -191,9 +189,3 @@ def _end_extensions(
                 extend = exterior
         result.append(extend)
     return result[0], result[1]
-
-
-def room_centroid(points: list[tuple[float, float]]) -> tuple[float, float]:
-    """The area centroid of a room polygon."""
-    centroid = Polygon(points).centroid
-    return (centroid.x, centroid.y)

@@ -41,7 +41,7 @@ def add_lights(ctx: BuildContext) -> None:
             )
             added.info = f"light {light.id}"
         return
-    xs, ys = _extent(ctx)
+    xs, ys = ctx.extent()
     centre = ((xs[0] + xs[1]) / 2, (ys[0] + ys[1]) / 2)
     ctx.spec.worldbody.add_light(
         name=names.light("sun"),
@@ -75,7 +75,7 @@ def add_cameras(ctx: BuildContext) -> None:
             fovy=camera.fovy_deg,
             proj=_projection(camera.orthographic),
         )
-    xs, ys = _extent(ctx)
+    xs, ys = ctx.extent()
     span = max(xs[1] - xs[0], ys[1] - ys[0]) * 1.1 + 0.5
     ctx.spec.worldbody.add_camera(
         name=names.OVERVIEW_CAMERA,
@@ -120,9 +120,3 @@ def _projection(orthographic: bool) -> mujoco.mjtProjection:
         if orthographic
         else mujoco.mjtProjection.mjPROJ_PERSPECTIVE
     )
-
-
-def _extent(ctx: BuildContext) -> tuple[tuple[float, float], tuple[float, float]]:
-    xs = [p[0] for room in ctx.scene.rooms for p in room.polygon]
-    ys = [p[1] for room in ctx.scene.rooms for p in room.polygon]
-    return (min(xs), max(xs)), (min(ys), max(ys))

@@ -115,3 +115,16 @@ def clamp_noise(value: float, lo: float, hi: float, tol: float) -> float:
     if hi < value <= hi + tol:
         return hi
     return value
+
+
+LIGHT_KINDS = ("point", "spot", "directional")
+
+
+def light_kind(node: Any) -> str:
+    """The ``type`` of a light node (default point), checked against holomj's light kinds."""
+    kind = node.str_("type", "point").lower()
+    if kind not in LIGHT_KINDS:
+        raise node.get("type").error(
+            f"unknown light type {kind!r}", fix="use point, spot or directional"
+        )
+    return kind

@@ -56,6 +56,7 @@ from holomj.errors import SpecError
 from holomj.importers.common import (
     build_model,
     clamp_noise,
+    light_kind,
     snap_opening,
 )
 from holomj.importers.frames import (
@@ -533,11 +534,7 @@ class _ProcthorImport(ImportState):
 
     def _light(self, node: Node) -> Light:
         node.dict()
-        kind = node.str_("type", "point").lower()
-        if kind not in ("point", "spot", "directional"):
-            raise node.get("type").error(
-                f"unknown light type {kind!r}", fix="use point, spot or directional"
-            )
+        kind = light_kind(node)
         pos = node.opt("position")
         position = unity_point(*pos.dict().xyz()) if pos is not None else (0.0, 0.0, 2.5)
         rot = node.opt("rotation")

@@ -48,7 +48,7 @@ from pathlib import PurePath
 from typing import Any
 
 from holomj.errors import SpecError
-from holomj.importers.common import build_model, snap_opening
+from holomj.importers.common import build_model, light_kind, snap_opening
 from holomj.importers.frames import normalise_deg, quat_from_euler_xyz
 from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
@@ -352,11 +352,7 @@ class _SceneDefImport(ImportState):
 
     def _light(self, node: Node) -> Light:
         node.dict()
-        kind = node.str_("type", "point").lower()
-        if kind not in ("point", "spot", "directional"):
-            raise node.get("type").error(
-                f"unknown light type {kind!r}", fix="use point, spot or directional"
-            )
+        kind = light_kind(node)
         fields: dict[str, Any] = {
             "id": self.light_ids.new(node.str_("id", None) or "light"),
             "kind": kind,

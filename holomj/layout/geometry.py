@@ -369,12 +369,7 @@ class WalkChecker:
             return WalkCheck(False, True, self.reason)
         from scipy import ndimage
 
-        free = self.base.copy()
-        xs, ys, r2 = self.xs, self.ys, self.radius * self.radius
-        for xmin, ymin, xmax, ymax in rects:
-            dx = np.maximum(np.maximum(xmin - xs, xs - xmax), 0.0)
-            dy = np.maximum(np.maximum(ymin - ys, ys - ymax), 0.0)
-            free &= dx * dx + dy * dy >= r2
+        free = self._free_cells(rects)
         labels, _ = ndimage.label(free)
         if _doors_connected(labels, [free & z for z in self.zones]):
             return WalkCheck(True, True, "every door reaches every other door")
@@ -382,13 +377,17 @@ class WalkChecker:
 
     def blocked_cells(self, rects: Sequence[Sequence[float]]) -> np.ndarray:
         """Cells of the empty room's free space that these footprints make unwalkable."""
+        return self.base & ~self._free_cells(rects)
+
+    def _free_cells(self, rects: Sequence[Sequence[float]]) -> np.ndarray:
+        """Cells where a walker of ``radius`` fits beside these footprints."""
         free = self.base.copy()
         xs, ys, r2 = self.xs, self.ys, self.radius * self.radius
         for xmin, ymin, xmax, ymax in rects:
             dx = np.maximum(np.maximum(xmin - xs, xs - xmax), 0.0)
             dy = np.maximum(np.maximum(ymin - ys, ys - ymax), 0.0)
             free &= dx * dx + dy * dy >= r2
-        return self.base & ~free
+        return free
 
 
 def _doors_connected(labels: np.ndarray, cells: Sequence[np.ndarray]) -> bool:

@@ -15,7 +15,7 @@ import typer
 from rich.table import Table
 
 from holomj.cli_assets import assets_app, resolve_library
-from holomj.cli_common import emit_json, err_console, guard, out_console
+from holomj.cli_common import LibraryOption, emit_json, err_console, guard, out_console
 from holomj.cli_layout import layout_app
 from holomj.cli_populate import populate_command
 from holomj.cli_validate import validate_command
@@ -48,13 +48,7 @@ def compile_command(
     fmt: Annotated[
         str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
     ] = None,
-    library: Annotated[
-        Path | None,
-        typer.Option(
-            "--library",
-            help="Asset library folder (default: $HOLOMJ_HOME/library, built on first use).",
-        ),
-    ] = None,
+    library: LibraryOption = None,
     overwrite: Annotated[
         bool, typer.Option("--overwrite", help="Replace OUT if it exists.")
     ] = False,

@@ -14,17 +14,10 @@ import typer
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from holomj.cli_common import emit_json, err_console, guard, out_console
+from holomj.cli_common import LibraryOption, emit_json, err_console, guard, out_console
 from holomj.errors import InputError
 
 assets_app = typer.Typer(help="Manage asset libraries.", no_args_is_help=True)
-
-LibraryOption = Annotated[
-    Path | None,
-    typer.Option(
-        "--library", help="Library folder (default: $HOLOMJ_HOME/library or the user cache)."
-    ),
-]
 
 
 def resolve_library(path: Path | None, create: bool = False) -> Path:

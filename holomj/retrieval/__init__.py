@@ -1,0 +1,1 @@
+"""Asset and material retrieval: text (sentence-transformers), visual (open-clip), size."""

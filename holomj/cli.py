@@ -15,11 +15,18 @@ import typer
 from rich.table import Table
 
 from holomj.cli_assets import assets_app, resolve_library
-from holomj.cli_common import LibraryOption, emit_json, err_console, guard, out_console
+from holomj.cli_common import (
+    LibraryOption,
+    emit_json,
+    err_console,
+    guard,
+    out_console,
+    write_text,
+)
+from holomj.cli_generate import generate_command, plan_command
 from holomj.cli_layout import layout_app
 from holomj.cli_populate import populate_command
 from holomj.cli_validate import validate_command
-from holomj.errors import InputError
 from holomj.importers.detect import FORMATS
 
 app = typer.Typer(
@@ -33,6 +40,8 @@ app.add_typer(assets_app, name="assets")
 app.add_typer(layout_app, name="layout")
 app.command("validate")(validate_command)
 app.command("populate")(populate_command)
+app.command("generate")(generate_command)
+app.command("plan")(plan_command)
 
 
 @app.command("compile")
@@ -141,7 +150,7 @@ def info_command(
 
 @app.command("schema")
 def schema_command(
-    kind: Annotated[str, typer.Argument(help="scene, asset, library or report.")] = "scene",
+    kind: Annotated[str, typer.Argument(help="scene, asset, library, report or plan.")] = "scene",
     out: Annotated[
         Path | None, typer.Option("--out", "-o", help="Write to this file instead of stdout.")
     ] = None,
@@ -153,14 +162,7 @@ def schema_command(
     if out is None:
         sys.stdout.write(text)
     else:
-        guard(lambda: _write_text(out, text))
-
-
-def _write_text(path: Path, text: str) -> None:
-    try:
-        path.write_text(text, encoding="utf-8")
-    except OSError as err:
-        raise InputError(f"cannot write: {err.strerror or err}", where=str(path)) from None
+        guard(lambda: write_text(out, text))
 
 
 def main() -> None:

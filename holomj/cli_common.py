@@ -39,3 +39,13 @@ def guard(job: Callable[[], T]) -> T:
 def emit_json(data: Any) -> None:
     """Print ``data`` as JSON on stdout."""
     sys.stdout.write(json.dumps(data, indent=2, sort_keys=True) + "\n")
+
+
+def write_text(path: Path, text: str) -> None:
+    """Write ``text`` to ``path``; an OS error becomes a one-line InputError naming the file."""
+    from holomj.errors import InputError
+
+    try:
+        Path(path).write_text(text, encoding="utf-8")
+    except OSError as err:
+        raise InputError(f"cannot write: {err.strerror or err}", where=str(path)) from None

@@ -63,18 +63,25 @@ def export_scene(
     *,
     overwrite: bool = False,
     extra_json: dict[str, Any] | None = None,
+    extra_text: dict[str, str] | None = None,
 ) -> Path:
-    """Write ``compiled`` to ``out`` (see module docstring) and return ``out``."""
+    """Write ``compiled`` to ``out`` (see module docstring) and return ``out``.
+
+    ``extra_json`` and ``extra_text`` map file names in ``out`` to JSON data and to text, written
+    in the same atomic step as the scene.
+    """
     out = Path(out)
     prepare_output(out, overwrite)
+    extras = {name: dump_json(data) for name, data in (extra_json or {}).items()}
+    extras.update(extra_text or {})
     try:
-        replace_folder(out, lambda tmp: _write_tree(compiled, tmp, extra_json or {}))
+        replace_folder(out, lambda tmp: _write_tree(compiled, tmp, extras))
     except OSError as err:
         raise ExportError(f"writing failed: {err}", where=str(out)) from None
     return out
 
 
-def _write_tree(compiled: CompiledScene, root: Path, extra_json: dict[str, Any]) -> None:
+def _write_tree(compiled: CompiledScene, root: Path, extras: dict[str, str]) -> None:
     (root / SCENE_XML).write_text(compiled.to_xml(), encoding="utf-8")
     scene = scene_for_export(compiled.scene)
     (root / SCENE_JSON).write_text(
@@ -85,8 +92,8 @@ def _write_tree(compiled: CompiledScene, root: Path, extra_json: dict[str, Any])
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)
     _write_asset_library(compiled, root / ASSETS_DIR)
-    for name, data in sorted(extra_json.items()):
-        (root / name).write_text(dump_json(data), encoding="utf-8")
+    for name, text in sorted(extras.items()):
+        (root / name).write_text(text, encoding="utf-8")
 
 
 def _write_asset_library(compiled: CompiledScene, assets_dir: Path) -> None:

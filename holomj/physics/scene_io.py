@@ -45,6 +45,15 @@ def holomj_folder(path: Path) -> Path | None:
     return folder if is_scene and (path.is_dir() or path.name == SCENE_XML) else None
 
 
+def loaded_from_compiled(
+    compiled: CompiledScene, library: AssetLibrary, source: Path, folder: Path | None = None
+) -> LoadedScene:
+    """A compiled scene, in memory, ready to validate (its objects are the scene's objects)."""
+    model = compiled.model
+    objects = {o.id: model.body(names.object_body(o.id)).id for o in compiled.scene.objects}
+    return LoadedScene(Path(source), model, objects, compiled.scene, library, compiled, folder)
+
+
 def load_scene(
     path: Path, *, furniture: Furniture = "free", library: AssetLibrary | None = None
 ) -> LoadedScene:
@@ -57,8 +66,7 @@ def load_scene(
         scene = read_scene_file(folder / SCENE_JSON)
         library = library or AssetLibrary.open(folder / ASSETS_DIR)
         compiled = compile_scene(scene, library, furniture=furniture)
-        objects = {o.id: compiled.model.body(names.object_body(o.id)).id for o in scene.objects}
-        return LoadedScene(path, compiled.model, objects, scene, library, compiled, folder)
+        return loaded_from_compiled(compiled, library, path, folder)
     if path.is_dir():
         raise FormatError(
             "not a holomj scene folder (no scene.json and assets/library.json)",

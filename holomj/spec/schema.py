@@ -8,6 +8,7 @@ from pydantic import BaseModel
 
 from holomj.errors import InputError
 from holomj.spec.assets import AssetMeta, LibraryIndex
+from holomj.spec.plan import ScenePlan
 from holomj.spec.report import StabilityReport
 from holomj.spec.scene import SceneSpec
 
@@ -16,11 +17,12 @@ SCHEMAS: dict[str, type[BaseModel]] = {
     "asset": AssetMeta,
     "library": LibraryIndex,
     "report": StabilityReport,
+    "plan": ScenePlan,
 }
 
 
 def json_schema(kind: str = "scene") -> dict[str, Any]:
-    """The JSON Schema of ``kind`` (scene, asset or library)."""
+    """The JSON Schema of ``kind`` (scene, asset, library, report or plan)."""
     try:
         model = SCHEMAS[kind]
     except KeyError:

@@ -1,0 +1,205 @@
+"""``holomj generate`` (prompt -> validated scene folder) and ``holomj plan`` (prompt -> plan).
+
+Exit codes: 0 when the scene was written (``--strict``: and validated ok, else 1), 2 for bad input
+(empty prompt, existing OUT without ``--overwrite``, bad options), 1 for a failure of ours.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from holomj.cli_common import (
+    LibraryOption,
+    emit_json,
+    err_console,
+    guard,
+    out_console,
+    write_text,
+)
+from holomj.errors import InputError
+
+PLANNERS = ("offline", "llm")
+
+PromptArg = Annotated[str, typer.Argument(metavar="PROMPT", help="What to build, in words.")]
+SeedOption = Annotated[int, typer.Option("--seed", min=0, max=2**32 - 1, help="Random seed.")]
+PlannerOption = Annotated[
+    str,
+    typer.Option(
+        "--planner",
+        help="offline (knowledge base, no network) or llm (OpenAI-compatible endpoint from "
+        "--llm-* options, HOLOMJ_LLM_* variables or $HOLOMJ_HOME/config.toml).",
+    ),
+]
+TextModelOption = Annotated[
+    Path | None,
+    typer.Option(
+        "--text-model",
+        help="Local sentence-transformers model folder (default: the shipped all-MiniLM-L6-v2, "
+        "or $HOLOMJ_TEXT_MODEL).",
+    ),
+]
+LlmUrlOption = Annotated[
+    str | None, typer.Option("--llm-base-url", help="e.g. http://localhost:11434/v1")
+]
+LlmModelOption = Annotated[str | None, typer.Option("--llm-model", help="Model name.")]
+LlmKeyOption = Annotated[
+    str | None, typer.Option("--llm-api-key", help="API key (or HOLOMJ_LLM_API_KEY).")
+]
+LlmConfigOption = Annotated[
+    Path | None, typer.Option("--llm-config", help="TOML file with an [llm] table.")
+]
+
+
+def _check_planner(planner: str) -> None:
+    if planner not in PLANNERS:
+        raise InputError(
+            f"unknown planner {planner!r}", where="--planner", fix="use offline or llm"
+        )
+
+
+def generate_command(
+    prompt: PromptArg,
+    out: Annotated[Path, typer.Option("--out", "-o", help="Output folder to create.")],
+    seed: SeedOption = 0,
+    planner: PlannerOption = "offline",
+    library: LibraryOption = None,
+    overwrite: Annotated[
+        bool, typer.Option("--overwrite", help="Replace OUT if it exists.")
+    ] = False,
+    render: Annotated[
+        bool, typer.Option("--render/--no-render", help="Render views and report.html.")
+    ] = True,
+    width: Annotated[int, typer.Option("--width", min=32, max=4096, help="Render width.")] = 640,
+    height: Annotated[int, typer.Option("--height", min=32, max=4096, help="Render height.")] = 480,
+    text_model: TextModelOption = None,
+    clip_weights: Annotated[
+        Path | None,
+        typer.Option(
+            "--clip-weights",
+            help="Local open-clip weights for the visual retrieval term (needs holomj[clip]; "
+            "default $HOLOMJ_CLIP_WEIGHTS; absent: the term is left out).",
+        ),
+    ] = None,
+    clip_model: Annotated[
+        str | None, typer.Option("--clip-model", help="open-clip architecture (ViT-B-32).")
+    ] = None,
+    materials: Annotated[
+        Path | None,
+        typer.Option("--materials", help="Material library folder (holomj materials import)."),
+    ] = None,
+    llm_base_url: LlmUrlOption = None,
+    llm_model: LlmModelOption = None,
+    llm_api_key: LlmKeyOption = None,
+    llm_config: LlmConfigOption = None,
+    layout_time: Annotated[
+        float,
+        typer.Option("--layout-time", min=0.1, max=120.0, help="Layout solver seconds per room."),
+    ] = 1.0,
+    strict: Annotated[
+        bool, typer.Option("--strict", help="Exit 1 when the scene does not validate ok.")
+    ] = False,
+    as_json: Annotated[bool, typer.Option("--json", help="Print a JSON summary.")] = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
+) -> None:
+    """Build a physically valid scene from a text prompt: plan, retrieve, lay out, drop small
+    objects, validate, export (and render)."""
+    from holomj.cli_assets import resolve_library
+    from holomj.generate.runner import GenerateOptions, generate_scene
+
+    guard(lambda: _check_planner(planner))
+    library_root = resolve_library(library)
+    options = GenerateOptions(
+        library=library_root,
+        seed=seed,
+        planner=planner,  # type: ignore[arg-type]
+        overwrite=overwrite,
+        render=render,
+        render_size=(width, height),
+        text_model=text_model,
+        clip_weights=clip_weights,
+        clip_model=clip_model,
+        materials=materials,
+        llm_base_url=llm_base_url,
+        llm_model=llm_model,
+        llm_api_key=llm_api_key,
+        llm_config=llm_config,
+        layout_time_s=layout_time,
+    )
+    show = not (quiet or as_json)
+    status = err_console.status("generating", spinner="dots") if show else None
+    with status if status is not None else contextlib.nullcontext():
+
+        def listener(stage: str, message: str) -> None:
+            if status is not None:
+                status.update(f"{stage}: {message}"[:120])
+
+        result = guard(lambda: generate_scene(prompt, out, options, listener=listener))
+    summary = result.summary()
+    if as_json:
+        emit_json(summary)
+    elif not quiet:
+        counts = summary["objects"]
+        verdict = "[bold green]ok[/]" if result.report.ok else "[bold red]NOT ok[/]"
+        out_console.print(
+            f"[bold green]generated[/] {result.plan.scene_type} ({result.plan.planner} plan) "
+            f"-> {out}/scene.xml"
+        )
+        out_console.print(
+            f"  {counts['rooms']} rooms, {counts['doors']} doors, {counts['windows']} windows, "
+            f"{counts['furniture']} furniture, {counts['small_objects']} small objects; "
+            f"validation {verdict}"
+        )
+        timing = ", ".join(f"{k} {v:.1f} s" for k, v in result.timings.items())
+        out_console.print(f"  {timing}")
+        for note in summary["notes"]:
+            out_console.print(f"  note: {note}", markup=False)
+    if strict and not result.report.ok:
+        raise typer.Exit(code=1)
+
+
+def plan_command(
+    prompt: PromptArg,
+    out: Annotated[
+        Path | None, typer.Option("--out", "-o", help="Write the plan JSON here.")
+    ] = None,
+    seed: SeedOption = 0,
+    planner: PlannerOption = "offline",
+    text_model: TextModelOption = None,
+    llm_base_url: LlmUrlOption = None,
+    llm_model: LlmModelOption = None,
+    llm_api_key: LlmKeyOption = None,
+    llm_config: LlmConfigOption = None,
+) -> None:
+    """Plan a scene from a prompt without building it: print (or write) the ScenePlan JSON."""
+    from holomj.export.writer import dump_json
+    from holomj.generate.runner import GenerateOptions, make_plan
+    from holomj.generate.stage_log import StageLog
+    from holomj.library.store import AssetLibrary
+
+    guard(lambda: _check_planner(planner))
+    options = GenerateOptions(
+        library=Path("."),
+        seed=seed,
+        planner=planner,  # type: ignore[arg-type]
+        text_model=text_model,
+        llm_base_url=llm_base_url,
+        llm_model=llm_model,
+        llm_api_key=llm_api_key,
+        llm_config=llm_config,
+    )
+    categories: list[str] = []
+    if planner == "llm":
+        from holomj.cli_assets import resolve_library
+
+        categories = AssetLibrary.open(resolve_library(None)).categories()
+    log = StageLog(lambda stage, message: err_console.print(f"{stage}: {message}", markup=False))
+    plan = guard(lambda: make_plan(prompt, options, categories, log))
+    text = dump_json(plan.model_dump(mode="json"))
+    if out is None:
+        typer.echo(text, nl=False)
+    else:
+        guard(lambda: write_text(out, text))

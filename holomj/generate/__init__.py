@@ -1,0 +1,1 @@
+"""Text to scene: plan -> retrieve -> layout -> compile -> spawn-and-drop -> validate -> export."""

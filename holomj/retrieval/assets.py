@@ -1,0 +1,376 @@
+"""Choosing library assets for plan objects: Holodeck's score M = α·V + β·T − γ·S.
+
+- **V** (visual): CLIP cosine between ``"a 3D model of <description>"`` and the asset's
+  thumbnails, the best view counting (:mod:`holomj.retrieval.visual`). Left out, with a note,
+  when no CLIP weights are configured or no candidate has thumbnails: T then carries V's
+  weight too (M = (α + β)·T − γ·S), because both measure how well the asset fits the
+  description and Holodeck's balance of relevance against size rests on α. Taken literally,
+  β·T − γ·S lets the size term decide the category: on the labelled set of the tests, top-1
+  category accuracy drops from 0.91 to 0.72. A candidate without thumbnails among others that
+  have them gets the median V of those (neutral).
+- **T** (text): sentence-embedding cosine between the description and the asset's text,
+  ``"<category words>: <asset description>"``.
+- **S** (size, metres): the mean absolute difference between the requested and the asset's
+  extents, height against height and the footprint under the better of the two quarter turns
+  (a 2 x 1 m bed matches a 1 x 2 m request), each difference capped at
+  :data:`SIZE_CAP_M` so one absurd extent cannot swamp the other terms. 0 without a size.
+
+Defaults α = 100, β = 1, γ = 10 as in Holodeck. Candidates are the assets whose placement
+flags include the requested placement (``builtin:box`` never competes). A category hint
+restricts them to that category when the library has it, else to its aliases
+(``category_aliases.json``); with neither, everything is scored and a note says so.
+Ranking is by score, ties by asset id, so results are deterministic.
+
+Embeddings of asset texts and thumbnails are cached in ``LIB/.cache/retrieval/``
+(:mod:`holomj.retrieval.cache`); query embeddings are cached in memory per retriever.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from holomj.errors import InputError
+from holomj.library.store import (
+    BUILTIN_BOX,
+    AssetLibrary,
+    LibraryAsset,
+    category_aliases,
+    normalise_category,
+)
+from holomj.retrieval.cache import EmbeddingCache, cache_file, content_key
+from holomj.retrieval.text import TextEncoder
+from holomj.retrieval.visual import VisualScorer, best_view_score, visual_scorer_from_env
+from holomj.spec.assets import PLACEMENTS
+
+SIZE_CAP_M = 1.5
+VARIED_POOL = 3
+"""``varied``: instances draw from the best asset and up to this many more of its category."""
+NO_CLIP_NOTE = (
+    "CLIP weights not configured: the visual term V is left out and its weight goes to the "
+    "text term T (set HOLOMJ_CLIP_WEIGHTS to a local open_clip checkpoint to use V)"
+)
+
+
+@dataclass(frozen=True)
+class RetrievalWeights:
+    """α, β, γ of M = α·V + β·T − γ·S."""
+
+    visual: float = 100.0
+    text: float = 1.0
+    size: float = 10.0
+
+
+@dataclass(frozen=True)
+class ScoredAsset:
+    """One candidate with its score and the terms it was made of (V None: left out)."""
+
+    asset_id: str
+    category: str
+    score: float
+    visual: float | None
+    text: float
+    size: float
+
+
+def asset_text(asset: LibraryAsset) -> str:
+    """What T compares a description with: ``"dining chair: a oak dining chair ..."``."""
+    words = " ".join(asset.meta.category.replace("_", " ").replace("-", " ").split())
+    description = " ".join(asset.meta.description.split())
+    return f"{words}: {description}" if description else words
+
+
+def size_discrepancy(
+    requested: tuple[float, float, float], asset_size: tuple[float, float, float]
+) -> float:
+    """S in metres: ``requested`` is (width, depth, height), ``asset_size`` the asset's (x, y, z).
+
+    The asset's width is its y extent and its depth its x extent (front faces +X); the
+    footprint may also be turned by 90°. Each difference is capped at :data:`SIZE_CAP_M`.
+    """
+    width, depth, height = requested
+    x, y, z = asset_size
+    dz = min(abs(z - height), SIZE_CAP_M)
+
+    def footprint(w: float, d: float) -> float:
+        return min(abs(w - width), SIZE_CAP_M) + min(abs(d - depth), SIZE_CAP_M)
+
+    return (min(footprint(y, x), footprint(x, y)) + dz) / 3.0
+
+
+class AssetRetriever:
+    """Ranks and chooses a library's assets for object descriptions."""
+
+    def __init__(
+        self,
+        library: AssetLibrary,
+        *,
+        encoder: TextEncoder | None = None,
+        visual: VisualScorer | None = None,
+        weights: RetrievalWeights = RetrievalWeights(),
+    ) -> None:
+        self.library = library
+        self.weights = weights
+        self.notes: list[str] = []
+        self._encoder = encoder
+        self._visual = visual
+        self._assets = [library.get(i) for i in library.ids() if i != BUILTIN_BOX]
+        self._index = {a.meta.id: k for k, a in enumerate(self._assets)}
+        self._text_matrix: np.ndarray | None = None
+        self._views: list[np.ndarray] | None = None
+        self._text_queries: dict[str, np.ndarray] = {}
+        self._visual_queries: dict[str, np.ndarray] = {}
+        if visual is None:
+            self._note(NO_CLIP_NOTE)
+
+    @property
+    def encoder(self) -> TextEncoder:
+        """The text encoder (the default one is loaded on first use)."""
+        if self._encoder is None:
+            from holomj.retrieval.text import text_encoder
+
+            self._encoder = text_encoder()
+        return self._encoder
+
+    def _note(self, note: str) -> None:
+        if note not in self.notes:
+            self.notes.append(note)
+
+    def rank(
+        self,
+        description: str,
+        *,
+        size: tuple[float, float, float] | None = None,
+        placement: str = "floor",
+        category: str | None = None,
+        limit: int = 10,
+    ) -> list[ScoredAsset]:
+        """The ``limit`` best candidates for ``description``, best first.
+
+        ``size`` is (width, depth, height) in metres (a plan object's), ``placement`` one of
+        floor, wall, object (on a receptacle) or ceiling, ``category`` the planner's hint.
+        """
+        if limit < 1:
+            raise InputError(f"limit must be at least 1, got {limit}", where="rank")
+        candidates = self._candidates(description, placement, category)
+        scored = self._score(description, size, candidates)
+        scored.sort(key=lambda s: (-s.score, s.asset_id))
+        return scored[:limit]
+
+    def choose(
+        self,
+        description: str,
+        *,
+        quantity: int,
+        variance: str,
+        rng: np.random.Generator,
+        size: tuple[float, float, float] | None = None,
+        placement: str = "floor",
+        category: str | None = None,
+    ) -> list[ScoredAsset]:
+        """One asset per instance: all the best one (``same``) or different ones (``varied``).
+
+        ``varied`` keeps the best asset and draws the others without replacement from the
+        next ``max(quantity - 1, VARIED_POOL)`` candidates of the best one's category; when
+        fewer exist, assets repeat. The instance order is shuffled with ``rng``.
+        """
+        if quantity < 1:
+            raise InputError(f"quantity must be at least 1, got {quantity}", where=description)
+        if variance not in ("same", "varied"):
+            raise InputError(
+                f"unknown variance {variance!r}", where=description, fix="use same or varied"
+            )
+        ranking = self.rank(
+            description,
+            size=size,
+            placement=placement,
+            category=category,
+            limit=max(1, len(self._assets)),
+        )
+        best = ranking[0]
+        if variance == "same" or quantity == 1:
+            return [best] * quantity
+        same_kind = [s for s in ranking if s.category == best.category]
+        pool = same_kind[: 1 + max(quantity - 1, VARIED_POOL)]
+        extra = min(quantity - 1, len(pool) - 1)
+        picks = [best]
+        if extra > 0:
+            drawn = rng.choice(np.arange(1, len(pool)), size=extra, replace=False)
+            picks += [pool[int(k)] for k in drawn]
+        chosen = [picks[k % len(picks)] for k in range(quantity)]
+        order = rng.permutation(quantity)
+        return [chosen[int(k)] for k in order]
+
+    # -- candidates -------------------------------------------------------------------------
+
+    def _candidates(
+        self, description: str, placement: str, category: str | None
+    ) -> list[LibraryAsset]:
+        if placement not in PLACEMENTS:
+            raise InputError(
+                f"unknown placement {placement!r}",
+                where=description,
+                fix=f"use one of: {', '.join(PLACEMENTS)}",
+            )
+        placed = [a for a in self._assets if placement in a.meta.placement]
+        if not placed:
+            raise InputError(
+                f"no {placement} asset in library {self.library.name!r} for {description!r}",
+                where=str(self.library.root),
+                fix="import one with 'holomj assets import' or use another library",
+            )
+        if category is None:
+            return placed
+        key = normalise_category(category)
+        exact = [a for a in placed if normalise_category(a.meta.category) == key]
+        if exact:
+            return exact
+        aliases = {normalise_category(c) for c in category_aliases().get(key, [])}
+        aliased = [a for a in placed if normalise_category(a.meta.category) in aliases]
+        if aliased:
+            return aliased
+        self._note(
+            f"no {placement} asset of category {category!r} (or its aliases) in library "
+            f"{self.library.name!r}: every {placement} asset was scored for {description!r}"
+        )
+        return placed
+
+    # -- scores -----------------------------------------------------------------------------
+
+    def _score(
+        self,
+        description: str,
+        size: tuple[float, float, float] | None,
+        candidates: Sequence[LibraryAsset],
+    ) -> list[ScoredAsset]:
+        rows = np.array([self._index[a.meta.id] for a in candidates])
+        # Row-wise products and sums: equal rows give bit-equal scores (a BLAS product may not).
+        vectors = self._text_vectors()[rows].astype(np.float64)
+        text = (vectors * self._text_query(description).astype(np.float64)).sum(axis=1)
+        if size is None:
+            sizes = np.zeros(len(candidates))
+        else:
+            requested = _check_size(size, description)
+            sizes = np.array([size_discrepancy(requested, a.meta.size) for a in candidates])
+        visual = self._visual_terms(description, rows)
+        w = self.weights
+        text_weight = w.text if visual is not None else w.text + w.visual
+        score = text_weight * text - w.size * sizes
+        if visual is not None:
+            known = np.array([v is not None for v in visual])
+            values = np.array([v if v is not None else np.nan for v in visual], dtype=np.float64)
+            neutral = float(np.median(values[known]))
+            score = score + w.visual * np.where(known, values, neutral)
+        return [
+            ScoredAsset(
+                asset_id=a.meta.id,
+                category=a.meta.category,
+                score=float(score[k]),
+                visual=None if visual is None else visual[k],
+                text=float(text[k]),
+                size=float(sizes[k]),
+            )
+            for k, a in enumerate(candidates)
+        ]
+
+    def _text_query(self, description: str) -> np.ndarray:
+        if description not in self._text_queries:
+            self._text_queries[description] = self.encoder.encode([description])[0]
+        return self._text_queries[description]
+
+    def _text_vectors(self) -> np.ndarray:
+        if self._text_matrix is None:
+            encoder = self.encoder
+            texts = [asset_text(a) for a in self._assets]
+            keys = [content_key(encoder.name, t) for t in texts]
+            cache = self._cache(encoder.name)
+            self._text_matrix = cache.fetch(
+                keys, lambda idx: encoder.encode([texts[i] for i in idx])
+            )
+            for note in cache.notes:
+                self._note(note)
+        return self._text_matrix
+
+    def _cache(self, model_name: str) -> EmbeddingCache:
+        return EmbeddingCache(cache_file(self.library.root, model_name))
+
+    def _visual_terms(self, description: str, rows: np.ndarray) -> list[float | None] | None:
+        """V per candidate (None for one without thumbnails), or None when V is left out."""
+        if self._visual is None or self.weights.visual == 0.0:
+            return None
+        views = self._thumbnail_vectors()
+        if not any(views[r].shape[0] for r in rows):
+            self._note(
+                "no candidate asset has thumbnails: the visual term V is left out and its "
+                "weight goes to the text term T"
+            )
+            return None
+        if description not in self._visual_queries:
+            self._visual_queries[description] = self._visual.encode_texts([description])[0]
+        query = self._visual_queries[description]
+        bare = sum(1 for r in rows if views[r].shape[0] == 0)
+        if bare:
+            self._note(
+                "assets without thumbnails get the median visual score of the others "
+                f"(e.g. {bare} candidate(s) for {description!r})"
+            )
+        return [best_view_score(query, views[r]) if views[r].shape[0] else None for r in rows]
+
+    def _thumbnail_vectors(self) -> list[np.ndarray]:
+        if self._views is not None:
+            return self._views
+        scorer = self._visual
+        assert scorer is not None
+        paths: list[Path] = []
+        owners: list[int] = []
+        for k, asset in enumerate(self._assets):
+            for rel in asset.meta.thumbnails:
+                path = asset.path(rel)
+                if path.is_file():
+                    paths.append(path)
+                    owners.append(k)
+                else:
+                    self._note(f"thumbnail {rel!r} of asset {asset.meta.id!r} is missing")
+        keys = [content_key(scorer.name, p.read_bytes()) for p in paths]
+        cache = self._cache(scorer.name)
+        matrix = cache.fetch(keys, lambda idx: scorer.encode_images([paths[i] for i in idx]))
+        for note in cache.notes:
+            self._note(note)
+        dim = matrix.shape[1] if matrix.size else 0
+        views = [np.zeros((0, dim), np.float32) for _ in self._assets]
+        for k in range(len(self._assets)):
+            mine = [row for row, owner in enumerate(owners) if owner == k]
+            if mine:
+                views[k] = matrix[mine]
+        self._views = views
+        return views
+
+
+def _check_size(size: Sequence[float], description: str) -> tuple[float, float, float]:
+    values = tuple(float(v) for v in size)
+    if len(values) != 3 or not all(np.isfinite(v) and v > 0 for v in values):
+        raise InputError(
+            f"size must be three positive numbers (width, depth, height), got {list(size)}",
+            where=description,
+        )
+    return values  # type: ignore[return-value]
+
+
+def retriever_for(
+    library: AssetLibrary,
+    *,
+    clip_weights: Path | None = None,
+    clip_model: str | None = None,
+    encoder: TextEncoder | None = None,
+    weights: RetrievalWeights = RetrievalWeights(),
+) -> AssetRetriever:
+    """A retriever for ``library`` with the visual term when CLIP weights are configured.
+
+    ``clip_weights`` (else ``$HOLOMJ_CLIP_WEIGHTS``) is a local open_clip checkpoint of the
+    architecture ``clip_model`` (else ``$HOLOMJ_CLIP_MODEL``, default ViT-B-32).
+    """
+    visual = visual_scorer_from_env(clip_weights, clip_model)
+    return AssetRetriever(library, encoder=encoder, visual=visual, weights=weights)

@@ -125,23 +125,42 @@ def description_of(obj: PlanObject) -> str:
     return obj.description.strip() or obj.name
 
 
+@dataclass
+class RoomAssets:
+    """The assets retrieved for a room's floor and wall instances (instance name -> asset id)."""
+
+    room_id: str
+    floor: dict[str, str] = field(default_factory=dict)
+    wall: dict[str, str] = field(default_factory=dict)
+    picks: list[dict[str, Any]] = field(default_factory=list)
+    failed: list[dict[str, str]] = field(default_factory=list)
+
+
+def retrieve_room(
+    plan_room: PlanRoom, library: AssetLibrary, chooser: AssetChooser, seed: int
+) -> RoomAssets:
+    """One asset per floor and wall instance of ``plan_room``; failures are recorded."""
+    out = RoomAssets(plan_room.id)
+    rng = stage_rng(seed, "retrieve", plan_room.id)
+    out.floor = _retrieve(plan_room, "floor", chooser, rng, out)
+    out.wall = _retrieve(plan_room, "wall", chooser, rng, out)
+    return out
+
+
 def furnish_room(
     plan_room: PlanRoom,
     room: Room,
     context: RoomContext,
+    assets: RoomAssets,
     library: AssetLibrary,
-    chooser: AssetChooser,
     seed: int,
     *,
     time_limit_s: float = 1.0,
 ) -> RoomFurniture:
-    """Retrieve, lay out and hang the objects ``plan_room`` asks for, in ``room``."""
-    out = RoomFurniture(room.id)
-    retrieve_rng = stage_rng(seed, "retrieve", room.id)
-    floor_assets = _retrieve(plan_room, "floor", library, chooser, retrieve_rng, out)
-    wall_assets = _retrieve(plan_room, "wall", library, chooser, retrieve_rng, out)
-
-    problem = _problem(plan_room, room, context, floor_assets, library)
+    """Lay out the retrieved floor ``assets`` of ``plan_room`` in ``room`` and hang its wall
+    objects."""
+    out = RoomFurniture(room.id, picks=list(assets.picks), unplaced=list(assets.failed))
+    problem = _problem(plan_room, room, context, assets.floor, library)
     result = solve_room(
         problem,
         solver="cpsat",
@@ -155,7 +174,7 @@ def furnish_room(
         out.unplaced.append({"object": item.id, "stage": "layout", "reason": item.reason})
     floor_items: list[FloorItem] = []
     for instance, placement in result.placements.items():
-        asset_id = floor_assets[instance]
+        asset_id = assets.floor[instance]
         meta = library.get(asset_id).meta
         oid = object_id(room.id, instance)
         out.objects.append(
@@ -168,21 +187,20 @@ def furnish_room(
                 room=room.id,
             )
         )
-        floor_items.append(FloorItem(instance, _footprint(placement), meta.size[2]))
+        floor_items.append(FloorItem(oid, _footprint(placement), meta.size[2]))
         plan_obj = by_name[instance.rsplit("-", 1)[0]]
         if plan_obj.on_top:
             out.receptacles.append((oid, plan_obj))
-    _hang(plan_room, room, context, wall_assets, floor_items, library, seed, out)
+    _hang(plan_room, room, context, assets.wall, floor_items, library, seed, out)
     return out
 
 
 def _retrieve(
     plan_room: PlanRoom,
     placement: str,
-    library: AssetLibrary,
     chooser: AssetChooser,
     rng: np.random.Generator,
-    out: RoomFurniture,
+    out: RoomAssets,
 ) -> dict[str, str]:
     """Instance name -> asset id for the room's objects of one placement."""
     chosen: dict[str, str] = {}
@@ -201,7 +219,7 @@ def _retrieve(
             )
         except HolomjError as err:
             for instance in obj.instances():
-                out.unplaced.append(
+                out.failed.append(
                     {"object": instance, "stage": "retrieve", "reason": err.one_line()}
                 )
             continue
@@ -291,16 +309,17 @@ def _hang(
 ) -> None:
     above = {o.name: o.above for o in plan_room.objects if o.placement == "wall"}
     requests = []
+    asset_of = {object_id(room.id, instance): a for instance, a in assets.items()}
     for instance, asset_id in assets.items():
         meta = library.get(asset_id).meta
         depth, width, height = meta.size
         target = above.get(instance.rsplit("-", 1)[0])
         requests.append(
             WallObjectRequest(
-                id=instance,
+                id=object_id(room.id, instance),
                 size=(width, depth, height),
                 kind=WALL_KINDS.get(meta.category, "other"),
-                above=instance_name(target, 0) if target else None,
+                above=object_id(room.id, instance_name(target, 0)) if target else None,
             )
         )
     if not requests:
@@ -317,16 +336,18 @@ def _hang(
         wall_thickness=context.wall_thickness,
     )
     for p in placed:
-        obj = p.scene_object(assets[p.id]).model_copy(
+        obj = p.scene_object(asset_of[p.id]).model_copy(
             update={
-                "id": object_id(room.id, p.id),
                 "position": tuple(round(v, 4) for v in (p.x, p.y, p.z)),
                 "yaw_deg": round(p.yaw_deg, 4),
             }
         )
         out.objects.append(obj)
+    instance_of = {object_id(room.id, instance): instance for instance in assets}
     for item in unplaced:
-        out.unplaced.append({"object": item.id, "stage": "wall", "reason": item.reason})
+        out.unplaced.append(
+            {"object": instance_of[item.id], "stage": "wall", "reason": item.reason}
+        )
 
 
 def _layout_record(result: LayoutResult) -> dict[str, Any]:

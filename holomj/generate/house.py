@@ -56,7 +56,7 @@ def room_request(room: PlanRoom) -> RoomRequest:
             max_side=hi,
         )
     if room.area_m2 is not None:
-        lo = max(1.0, min(lo, math.sqrt(room.area_m2)))
+        lo = max(1.0, min(lo, math.sqrt(room.area_m2) * 0.75))
         hi = min(MAX_SIDE_M, max(hi, math.sqrt(room.area_m2) * 1.3))
     return RoomRequest(
         id=room.id,

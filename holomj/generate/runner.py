@@ -19,7 +19,7 @@ from typing import Any, Literal
 
 from holomj.errors import HolomjError, InputError
 from holomj.export.writer import export_scene, prepare_output
-from holomj.generate.furnish import RoomContext, furnish_room
+from holomj.generate.furnish import RoomContext, furnish_room, retrieve_room
 from holomj.generate.house import build_shell
 from holomj.generate.small_objects import drop_small_objects
 from holomj.generate.stage_log import Listener, StageLog
@@ -131,12 +131,6 @@ def generate_scene(
     listener: Listener | None = None,
 ) -> GenerateResult:
     """Run every stage for ``prompt`` and write ``out`` (see the module docstring)."""
-    from holomj.physics.scene_io import loaded_from_compiled
-    from holomj.physics.settle import run_validation
-    from holomj.retrieval.assets import retriever_for
-    from holomj.retrieval.materials import material_picker
-    from holomj.retrieval.text import text_encoder
-
     if not prompt.strip():
         raise InputError("the prompt is empty", where="PROMPT", fix='e.g. "a small kitchen"')
     if len(prompt) > MAX_PROMPT_CHARS:
@@ -146,148 +140,199 @@ def generate_scene(
         )
     out = Path(out)
     prepare_output(out, options.overwrite)
-    log = StageLog(listener)
-    seed = options.seed
-    library = AssetLibrary.open(options.library)
-    log.info("setup", f"library {library.root} ({len(library.ids())} assets), seed {seed}")
-
-    with log.stage("plan"):
-        plan = make_plan(prompt, options, library.categories(), log)
-        log.info(
-            "plan",
-            f"{plan.planner} plan: {plan.scene_type} ({plan.scene_type_match or 'direct'}), "
-            f"{len(plan.rooms)} room(s), "
-            f"{sum(o.quantity for r in plan.rooms for o in r.objects)} furniture item(s)",
-        )
-        for note in plan.notes:
-            log.info("plan", f"note: {note}")
-
-    with log.stage("retrieve"):
-        encoder = text_encoder(options.text_model)
-        retriever = retriever_for(
-            library,
-            clip_weights=options.clip_weights,
-            clip_model=options.clip_model,
-            encoder=encoder,
-        )
-        pick_material = material_picker(encoder=encoder, materials=options.materials)
-        for note in retriever.notes:
-            log.info("retrieve", note)
-
-    with log.stage("layout"):
-        shell = build_shell(plan, seed, pick_material)
-        for warning in shell.warnings:
-            log.info("layout", f"warning: {warning}")
-        context = RoomContext(
-            walls=SceneSpec(rooms=shell.rooms).walls,
-            doors=shell.doors,
-            windows=shell.windows,
-            wall_height=plan.wall_height,
-            wall_thickness=SceneSpec.model_fields["wall_thickness"].default,
-        )
-        rooms_done = []
-        for plan_room in plan.rooms:
-            room = next(r for r in shell.rooms if r.id == plan_room.id)
-            furnished = furnish_room(
-                plan_room,
-                room,
-                context,
-                library,
-                retriever,
-                seed,
-                time_limit_s=options.layout_time_s,
-            )
-            rooms_done.append(furnished)
-            lay = furnished.layout
-            log.info(
-                "layout",
-                f"{room.id}: {len(furnished.objects)} object(s) placed, "
-                f"{len(furnished.unplaced)} not, constraints "
-                f"{lay.get('constraints_satisfied', 0)}/{lay.get('constraints_total', 0)} "
-                f"({lay.get('solver', '-')}, {lay.get('seconds', 0):.2f} s)",
-            )
-            for item in furnished.unplaced:
-                log.info("layout", f"{room.id}: not placed: {item['object']}: {item['reason']}")
-        scene = SceneSpec(
-            name=scene_name(prompt),
-            wall_height=plan.wall_height,
-            rooms=shell.rooms,
-            doors=shell.doors,
-            windows=shell.windows,
-            objects=[o for r in rooms_done for o in r.objects],
-            materials={n: m for n, m in shell.materials.items() if n not in BUILTIN_MATERIALS},
-            source=f"holomj generate (seed {seed}): {prompt}",
-        )
-
-    with log.stage("small_objects"):
-        receptacles = [rec for r in rooms_done for rec in r.receptacles]
-        small = drop_small_objects(scene, receptacles, library, retriever, seed)
-        scene = small.scene
-        log.info(
-            "small_objects",
-            f"{small.placed}/{small.requested} small object(s) dropped on "
-            f"{len(receptacles)} receptacle(s)",
-        )
-        for rec in small.receptacles:
-            for failure in rec["failures"]:
-                log.info(
-                    "small_objects",
-                    f"{rec['receptacle']}: not placed: {failure['object']}: {failure['reason']}",
-                )
-
-    with log.stage("compile"):
-        compiled = compile_scene(scene, library)
-
-    with log.stage("validate"):
-        loaded = loaded_from_compiled(compiled, library, out)
-        report = run_validation(loaded, Thresholds(), "as-is", options.sleep).report
-        log.info(
-            "validate",
-            f"{'ok' if report.ok else 'NOT ok'}: {report.counts['stable']}/"
-            f"{report.counts['objects']} stable, {report.counts['penetrations']} "
-            f"penetration(s), max {report.max_penetration_m * 1000:.1f} mm, "
-            f"{sum(report.warnings.values())} warning(s)",
-        )
-
-    notes = [*plan.notes, *retriever.notes, *shell.warnings]
-    record = {
-        "prompt": prompt,
-        "seed": seed,
-        "planner": plan.planner,
-        "library": str(library.root),
-        "entrance": shell.entrance,
-        "materials": shell.material_choices,
-        "retrieval": [p for r in rooms_done for p in r.picks] + small.picks,
-        "layout": {r.room_id: r.layout for r in rooms_done},
-        "unplaced": [{**u, "room": r.room_id} for r in rooms_done for u in r.unplaced],
-        "small_objects": small.receptacles,
-        "counts": {
-            "rooms": len(scene.rooms),
-            "doors": len(scene.doors),
-            "windows": len(scene.windows),
-            "furniture": sum(len(r.objects) for r in rooms_done),
-            "small_objects": small.placed,
-            "objects": len(scene.objects),
-        },
-        "notes": notes,
-    }
-    with log.stage("export"):
-        record["timings_s"] = dict(log.timings)
-        export_scene(
-            compiled,
-            out,
-            overwrite=options.overwrite,
-            extra_json={
-                PLAN_JSON: plan.model_dump(mode="json"),
-                REPORT_JSON: report.model_dump(mode="json"),
-                GENERATE_JSON: record,
-            },
-            extra_text={GENERATE_LOG: log.text()},
-        )
+    run = _Run(prompt, out, options, StageLog(listener))
+    run.plan_stage()
+    run.retrieve_stage()
+    run.layout_stage()
+    run.small_objects_stage()
+    run.validate_stage()
+    run.export_stage()
     if options.render:
-        _render(out, options, log)
-    record["timings_s"] = dict(log.timings)
-    return GenerateResult(out, plan, report, record, dict(log.timings))
+        _render(out, options, run.log)
+    run.record["timings_s"] = dict(run.log.timings)
+    return GenerateResult(out, run.plan, run.report, run.record, dict(run.log.timings))
+
+
+class _Run:
+    """The state one generate run passes from stage to stage."""
+
+    def __init__(self, prompt: str, out: Path, options: GenerateOptions, log: StageLog) -> None:
+        self.prompt = prompt
+        self.out = out
+        self.options = options
+        self.seed = options.seed
+        self.log = log
+        self.library = AssetLibrary.open(options.library)
+        log.info(
+            "setup",
+            f"library {self.library.root} ({len(self.library.ids())} assets), seed {self.seed}",
+        )
+
+    def plan_stage(self) -> None:
+        with self.log.stage("plan"):
+            plan = make_plan(self.prompt, self.options, self.library.categories(), self.log)
+            furniture = sum(o.quantity for r in plan.rooms for o in r.objects)
+            self.log.info(
+                "plan",
+                f"{plan.planner} plan: {plan.scene_type} "
+                f"({plan.scene_type_match or 'direct'}), {len(plan.rooms)} room(s), "
+                f"{furniture} furniture item(s)",
+            )
+            for note in plan.notes:
+                self.log.info("plan", f"note: {note}")
+        self.plan = plan
+
+    def retrieve_stage(self) -> None:
+        from holomj.retrieval.assets import retriever_for
+        from holomj.retrieval.materials import material_picker
+        from holomj.retrieval.text import text_encoder
+
+        with self.log.stage("retrieve"):
+            encoder = text_encoder(self.options.text_model)
+            self.retriever = retriever_for(
+                self.library,
+                clip_weights=self.options.clip_weights,
+                clip_model=self.options.clip_model,
+                encoder=encoder,
+            )
+            self.pick_material = material_picker(encoder=encoder, materials=self.options.materials)
+            self.assets = {
+                r.id: retrieve_room(r, self.library, self.retriever, self.seed)
+                for r in self.plan.rooms
+            }
+            for note in self.retriever.notes:
+                self.log.info("retrieve", note)
+            picked = sum(len(a.floor) + len(a.wall) for a in self.assets.values())
+            self.log.info("retrieve", f"{picked} asset(s) chosen")
+
+    def layout_stage(self) -> None:
+        plan, log = self.plan, self.log
+        with log.stage("layout"):
+            shell = build_shell(plan, self.seed, self.pick_material)
+            for warning in shell.warnings:
+                log.info("layout", f"warning: {warning}")
+            context = RoomContext(
+                walls=SceneSpec(rooms=shell.rooms).walls,
+                doors=shell.doors,
+                windows=shell.windows,
+                wall_height=plan.wall_height,
+                wall_thickness=SceneSpec.model_fields["wall_thickness"].default,
+            )
+            rooms = {r.id: r for r in shell.rooms}
+            self.furnished = []
+            for plan_room in plan.rooms:
+                done = furnish_room(
+                    plan_room,
+                    rooms[plan_room.id],
+                    context,
+                    self.assets[plan_room.id],
+                    self.library,
+                    self.seed,
+                    time_limit_s=self.options.layout_time_s,
+                )
+                self.furnished.append(done)
+                lay = done.layout
+                log.info(
+                    "layout",
+                    f"{done.room_id}: {len(done.objects)} object(s) placed, "
+                    f"{len(done.unplaced)} not, constraints "
+                    f"{lay.get('constraints_satisfied', 0)}/{lay.get('constraints_total', 0)} "
+                    f"({lay.get('solver', '-')}, {lay.get('seconds', 0):.2f} s)",
+                )
+                for item in done.unplaced:
+                    log.info(
+                        "layout", f"{done.room_id}: not placed: {item['object']}: {item['reason']}"
+                    )
+            self.shell = shell
+            self.scene = SceneSpec(
+                name=scene_name(self.prompt),
+                wall_height=plan.wall_height,
+                rooms=shell.rooms,
+                doors=shell.doors,
+                windows=shell.windows,
+                objects=[o for r in self.furnished for o in r.objects],
+                materials={n: m for n, m in shell.materials.items() if n not in BUILTIN_MATERIALS},
+                source=f"holomj generate (seed {self.seed}): {self.prompt}",
+            )
+
+    def small_objects_stage(self) -> None:
+        with self.log.stage("small_objects"):
+            receptacles = [rec for r in self.furnished for rec in r.receptacles]
+            small = drop_small_objects(
+                self.scene, receptacles, self.library, self.retriever, self.seed
+            )
+            self.scene = small.scene
+            self.log.info(
+                "small_objects",
+                f"{small.placed}/{small.requested} small object(s) dropped on "
+                f"{len(receptacles)} receptacle(s)",
+            )
+            for rec in small.receptacles:
+                for failure in rec["failures"]:
+                    self.log.info(
+                        "small_objects",
+                        f"{rec['receptacle']}: not placed: {failure['object']}: "
+                        f"{failure['reason']}",
+                    )
+        self.small = small
+
+    def validate_stage(self) -> None:
+        from holomj.physics.scene_io import loaded_from_compiled
+        from holomj.physics.settle import run_validation
+
+        with self.log.stage("compile"):
+            self.compiled = compile_scene(self.scene, self.library)
+        with self.log.stage("validate"):
+            loaded = loaded_from_compiled(self.compiled, self.library, self.out)
+            report = run_validation(loaded, Thresholds(), "as-is", self.options.sleep).report
+            self.log.info(
+                "validate",
+                f"{'ok' if report.ok else 'NOT ok'}: {report.counts['stable']}/"
+                f"{report.counts['objects']} stable, {report.counts['penetrations']} "
+                f"penetration(s), max {report.max_penetration_m * 1000:.1f} mm, "
+                f"{sum(report.warnings.values())} warning(s)",
+            )
+        self.report = report
+
+    def export_stage(self) -> None:
+        self.record = self._record()
+        with self.log.stage("export"):
+            self.record["timings_s"] = dict(self.log.timings)
+            export_scene(
+                self.compiled,
+                self.out,
+                overwrite=self.options.overwrite,
+                extra_json={
+                    PLAN_JSON: self.plan.model_dump(mode="json"),
+                    REPORT_JSON: self.report.model_dump(mode="json"),
+                    GENERATE_JSON: self.record,
+                },
+                extra_text={GENERATE_LOG: self.log.text()},
+            )
+
+    def _record(self) -> dict[str, Any]:
+        furnished, small, scene = self.furnished, self.small, self.scene
+        return {
+            "prompt": self.prompt,
+            "seed": self.seed,
+            "planner": self.plan.planner,
+            "library": str(self.library.root),
+            "entrance": self.shell.entrance,
+            "materials": self.shell.material_choices,
+            "retrieval": [p for r in furnished for p in r.picks] + small.picks,
+            "layout": {r.room_id: r.layout for r in furnished},
+            "unplaced": [{**u, "room": r.room_id} for r in furnished for u in r.unplaced],
+            "small_objects": small.receptacles,
+            "counts": {
+                "rooms": len(scene.rooms),
+                "doors": len(scene.doors),
+                "windows": len(scene.windows),
+                "furniture": sum(len(r.objects) for r in furnished),
+                "small_objects": small.placed,
+                "objects": len(scene.objects),
+            },
+            "notes": [*self.plan.notes, *self.retriever.notes, *self.shell.warnings],
+        }
 
 
 def _render(out: Path, options: GenerateOptions, log: StageLog) -> None:

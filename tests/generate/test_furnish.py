@@ -6,7 +6,13 @@ import pytest
 from shapely import affinity
 from shapely.geometry import Polygon, box
 
-from holomj.generate.furnish import FIXED_CATEGORIES, RoomContext, furnish_room, object_id
+from holomj.generate.furnish import (
+    FIXED_CATEGORIES,
+    RoomContext,
+    furnish_room,
+    object_id,
+    retrieve_room,
+)
 from holomj.generate.house import build_shell
 from holomj.spec.scene import SceneSpec
 from tests.generate.choosers import CategoryChooser
@@ -22,7 +28,9 @@ def furnished(default_library):
     rooms = {}
     for plan_room in plan.rooms:
         room = next(r for r in shell.rooms if r.id == plan_room.id)
-        rooms[room.id] = (room, furnish_room(plan_room, room, context, default_library, chooser, 3))
+        assets = retrieve_room(plan_room, default_library, chooser, 3)
+        result = furnish_room(plan_room, room, context, assets, default_library, 3)
+        rooms[room.id] = (room, result)
     return plan, shell, rooms
 
 

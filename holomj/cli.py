@@ -25,7 +25,9 @@ from holomj.cli_common import (
 )
 from holomj.cli_generate import generate_command, plan_command
 from holomj.cli_layout import layout_app
+from holomj.cli_materials import materials_app
 from holomj.cli_populate import populate_command
+from holomj.cli_render import render_command
 from holomj.cli_validate import validate_command
 from holomj.importers.detect import FORMATS
 
@@ -38,8 +40,10 @@ app = typer.Typer(
 )
 app.add_typer(assets_app, name="assets")
 app.add_typer(layout_app, name="layout")
+app.add_typer(materials_app, name="materials")
 app.command("validate")(validate_command)
 app.command("populate")(populate_command)
+app.command("render")(render_command)
 app.command("generate")(generate_command)
 app.command("plan")(plan_command)
 

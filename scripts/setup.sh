@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Set up holomj on a fresh Debian/Ubuntu machine: the Mesa GL libraries headless rendering needs
-# (when run as root with apt), then a virtual environment in .venv with holomj installed.
+# (and, with the dev extra, Chromium for the report page's browser test) when run as root with
+# apt, then a virtual environment in .venv with holomj installed.
 # Usage: bash scripts/setup.sh [EXTRAS]     e.g. bash scripts/setup.sh dev
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,8 +10,11 @@ extras="${1:-}"
 python="${PYTHON:-python3}"
 
 if command -v apt-get >/dev/null 2>&1 && [ "$(id -u)" = 0 ]; then
+  packages="libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6"
+  # the dev extra's tests open report.html in a headless browser
+  case ",$extras," in *,dev,*) packages="$packages chromium" ;; esac
   missing=""
-  for pkg in libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6; do
+  for pkg in $packages; do
     dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
   done
   if [ -n "$missing" ]; then

@@ -337,7 +337,7 @@ class _Run:
 
 def _render(out: Path, options: GenerateOptions, log: StageLog) -> None:
     """Render views and the HTML report into ``out``; a failure is logged, not raised."""
-    from holomj.render.folder import render_folder, write_report_html
+    from holomj.render import render_folder, write_report_html
 
     try:
         with log.stage("render"):

@@ -12,6 +12,7 @@ and why, timings) and ``generate.log`` (one line per event).
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -149,6 +150,7 @@ def generate_scene(
     run.export_stage()
     if options.render:
         _render(out, options, run.log)
+    _write_log(out / GENERATE_LOG, run.log)
     run.record["timings_s"] = dict(run.log.timings)
     return GenerateResult(out, run.plan, run.report, run.record, dict(run.log.timings))
 
@@ -347,4 +349,10 @@ def _render(out: Path, options: GenerateOptions, log: StageLog) -> None:
             log.info("render", f"{len(summary.files)} image(s), report {page.name}")
     except HolomjError as err:
         log.info("render", f"skipped: {err.one_line()}")
-    (out / GENERATE_LOG).write_text(log.text(), encoding="utf-8")
+
+
+def _write_log(path: Path, log: StageLog) -> None:
+    """Replace the log written with the export by the complete one (atomically)."""
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(log.text(), encoding="utf-8")
+    os.replace(tmp, path)

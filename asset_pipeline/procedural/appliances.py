@@ -209,6 +209,42 @@ def television(size: Vec3, rng: Rng) -> Design:
 
 
 @category(
+    "wall_television",
+    "furniture",
+    size=(0.08, 1.25, 0.75),
+    low=(0.04, 0.5, 0.3),
+    high=(0.15, 2.0, 1.2),
+    mass=12.0,
+    friction=0.6,
+    placement=("wall",),
+    description="a {inches}-inch black flat-screen television on a wall bracket",
+    variants=(None, (0.07, 0.9, 0.53)),
+)
+def wall_television(size: Vec3, rng: Rng) -> Design:
+    """A flat-screen TV for hanging: a bracket against the wall (-X) and the panel in front of
+    it, the screen facing +X."""
+    d, w, h = size
+    x0 = -0.5 * d
+    panel_t = uniform(rng, 0.025, min(0.05, 0.6 * d))
+    px = (0.5 * d - 0.002 - panel_t, 0.5 * d - 0.002)
+    bw, bh = clamp(0.3 * w, 0.15, 0.4), clamp(0.4 * h, 0.12, 0.35)
+    zc = 0.5 * h
+    parts: list[Part] = [
+        block((x0, px[0]), (-0.5 * bw, 0.5 * bw), (zc - 0.5 * bh, zc + 0.5 * bh), BLACK_METAL),
+        block(px, (-0.5 * w, 0.5 * w), (0.0, h), BLACK_METAL),
+        block(
+            (px[1], px[1] + 0.002),
+            (-0.5 * w + 0.015, 0.5 * w - 0.015),
+            (0.015, h - 0.015),
+            SCREEN,
+            collide=False,
+        ),
+    ]
+    diagonal = ((w - 0.03) ** 2 + (h - 0.03) ** 2) ** 0.5 / 0.0254
+    return Design(tuple(parts), {"inches": str(int(5 * round(diagonal / 5)))})
+
+
+@category(
     "piano",
     "furniture",
     size=(0.55, 1.5, 1.25),

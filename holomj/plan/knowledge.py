@@ -16,8 +16,9 @@ loads it and checks that its parts agree:
   their rooms (count ranges, adjacency wishes) and entrance; ``limits`` (what a room may hold).
 * ``styles.json``: style words with materials and wall heights; material words (``oak``,
   ``white``, ``brick``) and how each surface describes them.
-* ``receptacles.json``: small-object lists for receptacles that the shared table
-  ``holomj/data/small_objects_on_receptacles.json`` lacks (it wins where it has an entry); the shipped knowledge base has none and uses that table.
+* ``receptacles.json`` (optional): small-object lists for receptacles that the shared table
+  ``holomj/data/small_objects_on_receptacles.json`` lacks (that table wins where it has an
+  entry). The shipped knowledge base has none: it uses the shared table.
 
 :func:`knowledge_base` returns the shipped knowledge (cached); :func:`load_knowledge` reads any
 folder of the same files. A broken file raises :class:`~holomj.errors.SpecError` naming the file

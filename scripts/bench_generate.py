@@ -22,8 +22,8 @@ from pathlib import Path
 
 PROMPTS: dict[int, str] = {
     1: "a cozy reading room with two armchairs and a large bookshelf",
-    3: "an apartment with a living room, a kitchen and a bedroom",
-    5: "a two-bedroom apartment with a home office and a bathroom",
+    3: "a studio apartment with a kitchen and a bathroom",
+    5: "a one-bedroom apartment",
 }
 TARGET_S_PER_ROOM = 10.0
 
@@ -55,6 +55,8 @@ def main() -> int:
                 result = generate_scene(prompt, out, options)
                 total = time.perf_counter() - start
                 rooms = len(result.plan.rooms)
+                if rooms != expected_rooms:
+                    print(f"warning: {prompt!r} planned {rooms} rooms", file=sys.stderr)
                 runs.append(
                     {
                         "prompt": prompt,

@@ -1,0 +1,140 @@
+"""Working state of one offline plan: rooms, objects and small objects as they are drafted.
+
+The planner's steps (:mod:`holomj.plan.offline`) change these mutable records in place; the
+finished draft is written out as a :class:`~holomj.spec.plan.ScenePlan`. Also here: the few
+helpers every step shares (removing an object with the objects that depend on it, plurals in
+notes).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from holomj.plan.knowledge import KnowledgeBase, ObjectKind, RoomTemplate
+from holomj.plan.prompt import ParsedPrompt
+from holomj.retrieval.text import TextEncoder
+
+MAX_QUANTITY = 40  # PlanObject's limit
+
+
+@dataclass
+class DraftSmall:
+    """Small objects of one kind on a receptacle (``quantity`` on each receptacle instance)."""
+
+    name: str
+    category: str
+    quantity: int
+    variance: str = "varied"
+    requested: bool = False
+
+
+@dataclass
+class DraftObject:
+    """An object kind in a room, with its count, priority and what it depends on."""
+
+    name: str
+    kind: ObjectKind
+    quantity: int
+    priority: int = 5
+    variance: str = "same"
+    size: tuple[float, float, float] | None = None
+    requested: bool = False
+    per: str | None = None
+    per_max: int = 1
+    seat: bool = False
+    above: str | None = None
+    on_top: list[DraftSmall] = field(default_factory=list)
+    adjectives: list[str] = field(default_factory=list)
+    asked: str = ""  # the prompt's words for a requested object
+
+    @property
+    def floor(self) -> bool:
+        """Whether the object stands on the floor (not on a wall)."""
+        return self.kind.placement == "floor"
+
+    @property
+    def footprint(self) -> float:
+        """Floor area of one instance in m² (0 for a kind without a size)."""
+        size = self.size or self.kind.size or (0.0, 0.0, 0.0)
+        return size[0] * size[1]
+
+
+@dataclass
+class DraftRoom:
+    """A room being planned: its template, size, materials, objects and layout lines."""
+
+    id: str
+    template_id: str
+    template: RoomTemplate
+    entry_id: str | None = None  # the scene type's room entry it comes from, if any
+    adjacent_to: list[str] = field(default_factory=list)
+    size: tuple[float, float] | None = None
+    area: float = 0.0
+    fixed: bool = False
+    objects: list[DraftObject] = field(default_factory=list)
+    lines: list[str] = field(default_factory=list)
+    floor: str = ""
+    wall: str = ""
+    ceiling: str = ""
+    windows: int | None = None
+
+    def get(self, name: str) -> DraftObject | None:
+        """The room's object of kind ``name``, if it has one."""
+        return next((o for o in self.objects if o.name == name), None)
+
+    @property
+    def floor_area(self) -> float:
+        """The room's floor area: from its sides when set, else its drawn area."""
+        return self.size[0] * self.size[1] if self.size is not None else self.area
+
+
+@dataclass
+class DraftPlan:
+    """The whole draft: knowledge base, random generator, parsed prompt, rooms and notes."""
+
+    kb: KnowledgeBase
+    rng: np.random.Generator
+    parsed: ParsedPrompt
+    encoder: TextEncoder | None
+    notes: list[str] = field(default_factory=list)
+    rooms: list[DraftRoom] = field(default_factory=list)
+
+    def note(self, text: str) -> None:
+        """Add a note for the plan (once)."""
+        if text not in self.notes:
+            self.notes.append(text)
+
+    def text_encoder(self) -> TextEncoder:
+        """The text encoder, loading the default one on first use."""
+        if self.encoder is None:
+            from holomj.retrieval.text import text_encoder
+
+            self.encoder = text_encoder()
+        return self.encoder
+
+
+def remove_object(room: DraftRoom, obj: DraftObject) -> None:
+    """Remove an object from a room, with the unrequested objects counted per it (its chairs).
+
+    Requested objects that were counted per it stay, with their own count.
+    """
+    room.objects.remove(obj)
+    for other in list(room.objects):
+        if other.per == obj.name:
+            if other.requested:
+                other.per = None
+            elif other in room.objects:
+                remove_object(room, other)
+
+
+def plural_name(name: str, count: int) -> str:
+    """``name`` as written for ``count`` of it in a note (``bookshelf`` -> ``bookshelves``)."""
+    if count == 1:
+        return name
+    if name.endswith(("s", "sh", "ch", "x")):
+        return name + "es"
+    if name.endswith("f"):
+        return name[:-1] + "ves"
+    return name + "s"

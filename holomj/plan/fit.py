@@ -1,0 +1,227 @@
+"""Room limits for an offline plan: dropping and shrinking objects until a room's furniture fits.
+
+:func:`fit_room` keeps at most ``max_floor_instances`` floor objects, a floor footprint under
+``footprint_fraction`` of the room (rooms whose size was not given grow for requested objects;
+optional objects and extra requested instances go first, then objects take their smaller
+sizes, then extra essential instances go), no object too big for the room, at most
+``max_wall_instances`` wall objects and ``max_receptacles`` receptacles with small objects.
+Optional, low-priority objects go first, requested ones last. Every drop is noted, with its
+reason.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from holomj.plan.draft import DraftObject, DraftPlan, DraftRoom, plural_name, remove_object
+
+
+def fit_room(state: DraftPlan, room: DraftRoom) -> None:
+    """Keep the room's furniture within the limits (see :mod:`holomj.plan.fit`)."""
+    limits = state.kb.limits
+    start = _counts(room)
+    reasons: dict[str, list[str]] = {}
+
+    def floor() -> list[DraftObject]:
+        return [o for o in room.objects if o.floor]
+
+    def footprint() -> float:
+        return sum(o.footprint * o.quantity for o in floor())
+
+    def phase(before: dict[str, tuple[int, bool, str]], why: str) -> None:
+        for name, (count, _, _) in before.items():
+            obj = room.get(name)
+            if obj is None or obj.quantity < count:
+                reasons.setdefault(name, []).append(why)
+
+    before = _counts(room)
+    while sum(o.quantity for o in floor()) > limits.max_floor_instances:
+        _shrink(room, floor(), max_tier=3)
+    phase(before, f"at most {limits.max_floor_instances} floor objects per room")
+    budget = limits.footprint_fraction * room.floor_area
+    needed = sum(o.footprint * o.quantity for o in floor() if _tier(o) > 0)
+    if needed > budget and not room.fixed and any(o.requested for o in floor()):
+        area = min(limits.max_area, needed / limits.footprint_fraction)
+        state.note(
+            f"enlarged {room.id} from {room.area:.1f} to {area:.1f} m² to fit the objects asked for"
+        )
+        room.area = round(area, 1)
+        budget = limits.footprint_fraction * room.floor_area
+    before = _counts(room)
+    while footprint() > budget:
+        if not (
+            _shrink(room, floor(), max_tier=1)
+            or _downsize(state, room)
+            or _shrink(room, floor(), max_tier=2)
+        ):
+            break
+    phase(
+        before,
+        f"furniture footprint under {limits.footprint_fraction:.0%} of {room.floor_area:.1f} m²",
+    )
+    before = _counts(room)
+    _drop_misfits(state, room)
+    phase(before, "too big for the room")
+    if footprint() > budget + 1e-6:
+        names = ", ".join(o.name for o in floor())
+        state.note(
+            f"{room.id} keeps its {names} although they cover "
+            f"{footprint() / room.floor_area:.0%} of the floor"
+        )
+    before = _counts(room)
+    while sum(o.quantity for o in room.objects if not o.floor) > limits.max_wall_instances:
+        _shrink(room, [o for o in room.objects if not o.floor], max_tier=3)
+    phase(before, f"at most {limits.max_wall_instances} wall objects per room")
+    _limit_receptacles(state, room)
+    for obj in room.objects:
+        if obj.above is not None and room.get(obj.above) is None:
+            obj.above = None
+    _note_drops(state, room, start, reasons)
+
+
+ESSENTIAL = 9  # template priority from which an object is essential to its room
+
+
+def _tier(obj: DraftObject) -> int:
+    """Drop order: 0 optional, 1 extra requested instances, 2 extra essential instances and
+    lesser essentials, 3 a requested object or the room's defining object (kept if it fits)."""
+    if not obj.requested and obj.priority < ESSENTIAL:
+        return 0
+    if obj.requested:
+        return 1 if obj.quantity > 1 else 3
+    return 2 if obj.quantity > 1 or obj.priority < 10 else 3
+
+
+def _shrink(room: DraftRoom, candidates: Sequence[DraftObject], max_tier: int) -> bool:
+    """Take one instance from the lowest tier (False when no object of tier <= max_tier)."""
+    pool = [o for o in candidates if _tier(o) <= max_tier]
+    if not pool:
+        return False
+    tier = min(_tier(o) for o in pool)
+    pool = [o for o in pool if _tier(o) == tier]
+    if tier == 1:
+        victim = max(pool, key=lambda o: (o.quantity, -room.objects.index(o)))
+    else:
+        victim = min(pool, key=lambda o: (o.priority, -room.objects.index(o)))
+    victim.quantity -= 1
+    if victim.quantity <= 0:
+        remove_object(room, victim)
+        return True
+    for dependent in room.objects:
+        if dependent.per == victim.name and not dependent.requested and dependent.quantity > 1:
+            share = max(1, dependent.quantity // (victim.quantity + 1))
+            dependent.quantity = max(1, dependent.quantity - share)
+    return True
+
+
+def _downsize(state: DraftPlan, room: DraftRoom) -> bool:
+    """Give the object that saves the most floor its smaller size (False: none has one)."""
+    best: tuple[float, DraftObject, tuple[float, float, float]] | None = None
+    for obj in room.objects:
+        if not obj.floor or obj.requested:
+            continue
+        for size in (obj.kind.size, obj.kind.small):
+            if size is None:
+                continue
+            saving = (obj.footprint - size[0] * size[1]) * obj.quantity
+            if saving > 1e-6 and (best is None or saving > best[0]):
+                best = (saving, obj, size)
+    if best is None:
+        return False
+    _, obj, size = best
+    obj.size = size
+    state.note(f"made the {obj.name} in {room.id} smaller to fit: {_dims(size)}")
+    return True
+
+
+def _counts(room: DraftRoom) -> dict[str, tuple[int, bool, str]]:
+    return {o.name: (o.quantity, o.requested, o.asked or o.name) for o in room.objects}
+
+
+def _drop_misfits(state: DraftPlan, room: DraftRoom) -> None:
+    """Objects that cannot stand in the room at all: longer than the room, or together covering
+    more than ``single_fraction`` of it (the biggest go first)."""
+    limits = state.kb.limits
+    for obj in [o for o in room.objects if o.floor]:
+        if not _fits_room(obj.size, room):
+            smaller = [s for s in (obj.kind.size, obj.kind.small) if _fits_room(s, room)]
+            if smaller:
+                obj.size = smaller[0]
+                state.note(f"made the {obj.name} in {room.id} smaller to fit: {_dims(obj.size)}")
+            else:
+                remove_object(room, obj)
+    while True:
+        floor = [o for o in room.objects if o.floor]
+        total = sum(o.footprint * o.quantity for o in floor)
+        if not floor or total <= limits.single_fraction * room.floor_area:
+            break
+        victim = max(floor, key=lambda o: (o.footprint * o.quantity, room.objects.index(o)))
+        small = victim.kind.small
+        if victim.quantity == 1 and small is not None and small[0] * small[1] < victim.footprint:
+            victim.size = small
+            state.note(f"made the {victim.name} in {room.id} smaller to fit: {_dims(small)}")
+        elif victim.quantity > 1:
+            victim.quantity -= 1
+        else:
+            remove_object(room, victim)
+
+
+def _dims(size: tuple[float, float, float]) -> str:
+    return f"{size[0]:g} x {size[1]:g} m"
+
+
+def _fits_room(size: tuple[float, float, float] | None, room: DraftRoom) -> bool:
+    """Whether a footprint fits inside the room's rectangle (with 10 cm to spare)."""
+    if size is None or room.size is None:
+        return True
+    long_side, short_side = max(size[0], size[1]), min(size[0], size[1])
+    return long_side <= max(room.size) - 0.1 and short_side <= min(room.size) - 0.1
+
+
+def _limit_receptacles(state: DraftPlan, room: DraftRoom) -> None:
+    cap = state.kb.limits.max_receptacles
+    holders = [o for o in room.objects if o.on_top]
+    order = sorted(
+        holders,
+        key=lambda o: (
+            any(s.requested for s in o.on_top),
+            o.requested,
+            o.priority,
+            -room.objects.index(o),
+        ),
+    )
+    count = sum(o.quantity for o in holders)
+    for obj in order:
+        if count <= cap:
+            break
+        if any(s.requested for s in obj.on_top):
+            names = ", ".join(sorted({s.name for s in obj.on_top if s.requested}))
+            state.note(
+                f"only {cap} receptacles per room get small objects; {names} on the "
+                f"{obj.name} left out"
+            )
+        obj.on_top = []
+        count -= obj.quantity
+
+
+def _note_drops(
+    state: DraftPlan,
+    room: DraftRoom,
+    start: dict[str, tuple[int, bool, str]],
+    reasons: dict[str, list[str]],
+) -> None:
+    dropped, whys = [], []
+    for name, (count, requested, asked) in start.items():
+        obj = room.get(name)
+        now = obj.quantity if obj is not None else 0
+        if now >= count:
+            continue
+        why = "; ".join(dict.fromkeys(reasons.get(name, ["a limit of the room"])))
+        if requested:
+            state.note(f"asked for '{asked}' in {room.id}; planned {now} ({why})")
+        else:
+            dropped.append(f"{count - now} {plural_name(name, count - now)}")
+            whys.extend(reasons.get(name, []))
+    if dropped:
+        why = "; ".join(dict.fromkeys(whys)) or "a limit of the room"
+        state.note(f"dropped {', '.join(dropped)} from {room.id} ({why})")

@@ -1,0 +1,209 @@
+"""The prompt's object requests, merged into the rooms of an offline plan.
+
+Requested objects go to the room they were asked in, else the roomiest room that has (or would
+have) them; generic words (``chair``) become the kind that room uses; unknown words take the
+nearest known kind; excluded objects (``without a tv``) are removed; small objects go onto the
+room's receptacles, adding one when it has none.
+"""
+
+from __future__ import annotations
+
+import math
+
+from holomj.plan.draft import (
+    MAX_QUANTITY,
+    DraftObject,
+    DraftPlan,
+    DraftRoom,
+    DraftSmall,
+    plural_name,
+    remove_object,
+)
+from holomj.plan.furnish import draw_on_top
+from holomj.plan.knowledge import ObjectKind
+from holomj.plan.prompt import ObjectRequest
+from holomj.plan.scene_match import OBJECT_MATCH_MIN, nearest_object
+
+
+def apply_requests(state: DraftPlan) -> None:
+    """The prompt's objects: merged into rooms, excluded ones removed, unknown ones matched."""
+    parsed, kb = state.parsed, state.kb
+    requests = list(parsed.objects)
+    for phrase in parsed.unknown:
+        kind, sim = nearest_object(state, phrase)
+        if kind is None:
+            state.note(
+                f"'{phrase}' is not an object the knowledge base knows (nearest match "
+                f"{sim:.2f} < {OBJECT_MATCH_MIN}); left out"
+            )
+            continue
+        state.note(f"'{phrase}' is not in the knowledge base; planned the closest kind, '{kind}'")
+        requests.append(ObjectRequest(kind=kind, quantity=1, phrase=phrase))
+    for refused in parsed.refused:
+        state.note(f"'{refused.phrase}': {refused.reason}")
+    for request in requests:
+        if request.excluded or request.quantity == 0:
+            _exclude(state, request)
+            continue
+        room = _request_room(state, request)
+        name = _resolve_kind(state, request, room)
+        kind = kb.objects[name]
+        quantity = _quantity(request, kind)
+        if kind.placement == "object":
+            _add_small(state, room, name, kind, quantity)
+        else:
+            _add_object(state, room, name, kind, quantity, request)
+
+
+def _quantity(request: ObjectRequest, kind: ObjectKind) -> int:
+    if request.quantity is not None:
+        return request.quantity
+    if request.many:
+        return kind.many
+    return 2 if request.plural else 1
+
+
+def _request_room(state: DraftPlan, request: ObjectRequest) -> DraftRoom:
+    """The room an object is asked in, else the roomiest room that has (or would have) it, else
+    the roomiest room of the scene."""
+    if request.room is not None:
+        for room in state.rooms:
+            if room.template_id == request.room:
+                return room
+    kinds = state.kb.generics[request.kind].kinds if request.generic else [request.kind]
+    for want in kinds:
+        homes = [r for r in state.rooms if r.get(want) is not None or want in r.template.kinds()]
+        if homes:
+            return max(homes, key=lambda r: (_free_floor(state, r), -state.rooms.index(r)))
+    main = [r for r in state.rooms if r.entry_id is not None] or state.rooms
+    return max(main, key=lambda r: (_free_floor(state, r), -state.rooms.index(r)))
+
+
+def _free_floor(state: DraftPlan, room: DraftRoom) -> float:
+    """Floor area left under the footprint limit by the room's furniture so far."""
+    used = sum(o.footprint * o.quantity for o in room.objects if o.floor)
+    return state.kb.limits.footprint_fraction * room.floor_area - used
+
+
+def _resolve_kind(state: DraftPlan, request: ObjectRequest, room: DraftRoom) -> str:
+    """A generic word (``chair``) as the kind the room has, else the first kind it may mean."""
+    if not request.generic:
+        return request.kind
+    kinds = state.kb.generics[request.kind].kinds
+    for want in kinds:
+        if room.get(want) is not None:
+            return want
+    for want in kinds:
+        if want in room.template.kinds():
+            return want
+    return kinds[0]
+
+
+def _exclude(state: DraftPlan, request: ObjectRequest) -> None:
+    kinds = state.kb.generics[request.kind].kinds if request.generic else [request.kind]
+    removed = 0
+    for room in state.rooms:
+        if request.room is not None and room.template_id != request.room:
+            continue
+        for obj in list(room.objects):
+            if obj.name in kinds:
+                removed += obj.quantity
+                remove_object(room, obj)
+        for obj in room.objects:
+            obj.on_top = [s for s in obj.on_top if s.name not in kinds]
+    what = request.phrase or request.kind
+    state.note(f"left out '{what}' as asked" if removed else f"no '{what}' planned, as asked")
+
+
+def _add_object(
+    state: DraftPlan,
+    room: DraftRoom,
+    name: str,
+    kind: ObjectKind,
+    quantity: int,
+    request: ObjectRequest,
+) -> None:
+    if quantity > MAX_QUANTITY:
+        quantity = MAX_QUANTITY
+    obj = room.get(name)
+    size = kind.size_for(request.size)
+    if obj is None:
+        variance = kind.variance if quantity > 1 else "same"
+        obj = DraftObject(name=name, kind=kind, quantity=quantity, variance=variance)
+        obj.size = size
+        if kind.placement == "wall" and name == "television" and room.get("tv stand") is not None:
+            obj.above = "tv stand"
+        if kind.placement == "floor" and state.kb.is_receptacle(kind.category):
+            obj.on_top = draw_on_top(state, room, None, kind)
+        room.objects.append(obj)
+    else:
+        obj.quantity = quantity
+        if request.size is not None:
+            obj.size = size
+    obj.requested = True
+    obj.per = None
+    obj.adjectives = list(request.adjectives)
+    obj.asked = request.phrase
+
+
+def _add_small(
+    state: DraftPlan, room: DraftRoom, name: str, kind: ObjectKind, quantity: int
+) -> None:
+    """Put requested small objects on the room's receptacles (adding one when it has none)."""
+    kb = state.kb
+    cap = kb.limits.max_small_per_receptacle
+
+    def weight(obj: DraftObject) -> float:
+        return dict(kb.small_choices(room.template.type, obj.kind.category)).get(kind.category, 0)
+
+    holders = sorted(
+        (o for o in room.objects if o.floor and weight(o) > 0), key=lambda o: -weight(o)
+    )
+    if not holders:
+        holder_kind = _receptacle_for(state, room, kind.category)
+        if holder_kind is None:
+            state.note(
+                f"no receptacle in the knowledge base holds {plural_name(name, 2)}; left out"
+            )
+            return
+        holder = DraftObject(holder_kind, kb.objects[holder_kind], 1, priority=9)
+        holder.size = holder.kind.size
+        room.objects.append(holder)
+        holders = [holder]
+        state.note(f"added a {holder_kind} to the {room.template.name} to hold the {name}")
+    left = quantity
+    for holder in holders:
+        if left <= 0:
+            break
+        holder.on_top = [s for s in holder.on_top if s.requested]
+        room_left = cap - sum(s.quantity for s in holder.on_top)
+        each = min(room_left, math.ceil(left / holder.quantity))
+        if each <= 0:
+            continue
+        existing = next((s for s in holder.on_top if s.name == name), None)
+        if existing is not None:
+            existing.quantity += each
+        else:
+            holder.on_top.append(
+                DraftSmall(name, kind.category, each, kind.variance, requested=True)
+            )
+        left -= each * holder.quantity
+    if left > 0:
+        placed = quantity - left
+        state.note(
+            f"asked for {quantity} {plural_name(name, quantity)}; {max(placed, 0)} fit on the "
+            f"receptacles of the {room.template.name} (at most {cap} on each)"
+        )
+
+
+def _receptacle_for(state: DraftPlan, room: DraftRoom, category: str) -> str | None:
+    """The floor kind that best holds ``category`` in this room type."""
+    kb = state.kb
+    best: tuple[float, str] | None = None
+    for name, kind in kb.objects.items():
+        if kind.placement != "floor":
+            continue
+        weight = dict(kb.small_choices(room.template.type, kind.category)).get(category, 0.0)
+        if weight > 0 and (best is None or weight > best[0]):
+            best = (weight, name)
+    return best[1] if best is not None else None

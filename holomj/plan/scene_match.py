@@ -1,0 +1,91 @@
+"""Scene type choice, and matching unknown words to the knowledge base by text embedding.
+
+The scene type is the keyword the prompt's head names, refined by words anywhere (``an office
+for a professor``); rooms named without a scene make a home (:data:`HOME_SCENE`); anything else
+goes to the nearest scene type by cosine similarity of text embeddings. Unknown object words
+take the nearest object kind when it is similar enough (:data:`OBJECT_MATCH_MIN`). Embeddings of
+the knowledge base are cached per encoder and knowledge base.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from holomj.plan.draft import DraftPlan
+
+HOME_SCENE = "apartment"  # the scene type for rooms named without one
+OBJECT_MATCH_MIN = 0.5  # cosine similarity for an unknown object word to take a known kind
+
+# Embeddings of the knowledge base's scene types and object kinds, per (encoder, knowledge base).
+_SCENE_VECTORS: dict[tuple[int, int], tuple[object, object, np.ndarray]] = {}
+_OBJECT_VECTORS: dict[tuple[int, int], tuple[object, object, list[str], np.ndarray]] = {}
+
+
+def choose_scene(state: DraftPlan) -> tuple[str, str]:
+    """(scene type, how it was chosen)."""
+    parsed, kb = state.parsed, state.kb
+    if parsed.scene is not None:
+        scene, match = parsed.scene, f"keyword '{parsed.scene_keyword}'"
+    elif any(not r.excluded for r in parsed.rooms):
+        scene = HOME_SCENE
+        names = ", ".join(dict.fromkeys(kb.rooms[r.template].name for r in parsed.rooms))
+        match = f"rooms named without a scene type ({names}): planned a home ({scene})"
+        state.note(f"the prompt names rooms ({names}) but no scene type; planned a home ({scene})")
+    else:
+        scene, match = _nearest_scene(state)
+    for refined, word in parsed.refinements:
+        if kb.scene_types[refined].refines == scene:
+            scene = refined
+            match += f", refined to '{kb.scene_types[refined].name}' by '{word}'"
+            break
+    return scene, match
+
+
+def _nearest_scene(state: DraftPlan) -> tuple[str, str]:
+    """The scene type nearest to the prompt's head (or whole text) by embedding similarity."""
+    kb = state.kb
+    encoder = state.text_encoder()
+    query = state.parsed.head or state.parsed.text
+    key = (id(encoder), id(kb))
+    cached = _SCENE_VECTORS.get(key)
+    if cached is None or cached[0] is not encoder or cached[1] is not kb:
+        vectors = encoder.encode([s.embedding_text() for s in kb.scene_types.values()])
+        cached = (encoder, kb, np.asarray(vectors, dtype=np.float32))
+        _SCENE_VECTORS[key] = cached
+    names = list(kb.scene_types)
+    sims = cached[2] @ np.asarray(encoder.encode([query[:500]]), dtype=np.float32)[0]
+    order = np.argsort(-sims, kind="stable")
+    best, second = int(order[0]), int(order[1]) if len(order) > 1 else int(order[0])
+    scene = names[best]
+    shown = query if len(query) <= 80 else query[:77] + "..."
+    match = (
+        f"text embedding ({getattr(encoder, 'name', 'encoder')}): '{shown}' is nearest to "
+        f"'{kb.scene_types[scene].name}' (cosine {sims[best]:.2f}; next "
+        f"'{kb.scene_types[names[second]].name}' {sims[second]:.2f})"
+    )
+    state.note(
+        f"'{shown}' is not a scene type the knowledge base knows; planned the nearest one, "
+        f"'{kb.scene_types[scene].name}' (text similarity {sims[best]:.2f})"
+    )
+    return scene, match
+
+
+def nearest_object(state: DraftPlan, phrase: str) -> tuple[str | None, float]:
+    """The object kind nearest to an unknown phrase, if similar enough."""
+    kb = state.kb
+    encoder = state.text_encoder()
+    key = (id(encoder), id(kb))
+    cached = _OBJECT_VECTORS.get(key)
+    if cached is None or cached[0] is not encoder or cached[1] is not kb:
+        names = list(kb.objects)
+        texts = [
+            f"{name}: {kind.description}. Also called: {', '.join(kind.aliases)}"
+            for name, kind in kb.objects.items()
+        ]
+        cached = (encoder, kb, names, np.asarray(encoder.encode(texts), dtype=np.float32))
+        _OBJECT_VECTORS[key] = cached
+    sims = cached[3] @ np.asarray(encoder.encode([phrase]), dtype=np.float32)[0]
+    best = int(np.argmax(sims))
+    if float(sims[best]) < OBJECT_MATCH_MIN:
+        return None, float(sims[best])
+    return cached[2][best], float(sims[best])

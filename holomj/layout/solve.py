@@ -29,6 +29,8 @@ from holomj.layout.solver_cpsat import corridor_obstacles, solve_cpsat
 from holomj.layout.solver_greedy import insert_unplaced, satisfied_weight, solve_greedy
 
 SOLVERS = ("cpsat", "greedy")
+GREEDY_SHARE = 0.3  # of the time limit, for the greedy warm start before CP-SAT
+SAFETY_FACTOR = 10.0  # deterministic runs: the wall clock stops a search only this far past it
 Pose = tuple[int, int, int]
 
 
@@ -134,8 +136,11 @@ def solve_room(
     warnings = list(prep.warnings)
     if not prep.items:
         return _report(prep, {}, {}, start, "none", "no objects", warnings)
-    greedy_share = 1.0 if solver == "greedy" else 0.3
-    greedy = solve_greedy(prep, rng, time_limit_s * greedy_share)
+    greedy_share = 1.0 if solver == "greedy" else GREEDY_SHARE
+    # Deterministic runs bound the greedy search by its attempts and backtracks; the wall clock
+    # only stops it as a safety net, so a loaded machine does not change the layout.
+    greedy_clock = time_limit_s * greedy_share * (SAFETY_FACTOR if deterministic else 1.0)
+    greedy = solve_greedy(prep, rng, greedy_clock)
     poses: dict[int, Pose] = greedy.poses
     reasons: dict[int, str] = dict(greedy.unplaced)
     used, status = "greedy", f"{greedy.attempts} attempt(s), {greedy.backtracks} backtrack(s)"
@@ -184,7 +189,12 @@ def _run_cpsat(
     deterministic: bool,
     workers: int,
 ) -> tuple[dict[int, Pose] | None, str]:
-    remaining = max(time_limit_s - (time.perf_counter() - start), 0.05)
+    # Deterministic: the budgets come from the nominal limit (CP-SAT's deterministic time), not
+    # from the time left on the clock.
+    if deterministic:
+        remaining = time_limit_s * (1.0 - GREEDY_SHARE)
+    else:
+        remaining = max(time_limit_s - (time.perf_counter() - start), 0.05)
     share = 0.6 if prep.walk.applicable else 1.0
     out = solve_cpsat(
         prep,
@@ -199,7 +209,10 @@ def _run_cpsat(
     if not prep.walk.applicable or _walk_ok(prep, out.poses):
         return out.poses, out.status
     corridor = corridor_obstacles(prep, out.poses)
-    remaining = max(time_limit_s - (time.perf_counter() - start), 0.1)
+    if deterministic:
+        remaining = time_limit_s * (1.0 - GREEDY_SHARE) * (1.0 - share)
+    else:
+        remaining = max(time_limit_s - (time.perf_counter() - start), 0.1)
     again = solve_cpsat(
         prep,
         time_limit_s=remaining,

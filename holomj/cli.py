@@ -15,6 +15,7 @@ import typer
 from rich.table import Table
 
 from holomj.cli_assets import assets_app, resolve_library
+from holomj.cli_batch import batch_command
 from holomj.cli_common import (
     LibraryOption,
     emit_json,
@@ -28,6 +29,7 @@ from holomj.cli_layout import layout_app
 from holomj.cli_materials import materials_app
 from holomj.cli_populate import populate_command
 from holomj.cli_render import render_command
+from holomj.cli_robot import ProfileOption, RobotOption, add_robot_command
 from holomj.cli_validate import validate_command
 from holomj.importers.detect import FORMATS
 
@@ -46,6 +48,8 @@ app.command("populate")(populate_command)
 app.command("render")(render_command)
 app.command("generate")(generate_command)
 app.command("plan")(plan_command)
+app.command("add-robot")(add_robot_command)
+app.command("batch")(batch_command)
 
 
 @app.command("compile")
@@ -74,6 +78,11 @@ def compile_command(
             help="Seconds to simulate as a smoke test (0 skips).",
         ),
     ] = 1.0,
+    robot: RobotOption = None,
+    profile: ProfileOption = "default",
+    seed: Annotated[
+        int, typer.Option("--seed", min=0, max=2**32 - 1, help="Seed of the robot's spot.")
+    ] = 0,
     as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
 ) -> None:
@@ -94,6 +103,9 @@ def compile_command(
                 fmt=fmt,
                 overwrite=overwrite,
                 check_seconds=check_seconds,
+                robot=robot,
+                profile=profile,
+                seed=seed,
             )
         )
     if as_json:
@@ -108,6 +120,12 @@ def compile_command(
             f"{scene['windows']} windows, {scene['objects']} objects; "
             f"{model['bodies']} bodies, {model['geoms']} geoms, {model['total_mass_kg']} kg"
         )
+        if report.robot is not None:
+            x, y, _ = report.robot["position"]
+            out_console.print(
+                f"  robot {report.robot['name']} at ({x:.2f}, {y:.2f}), yaw "
+                f"{report.robot['yaw_deg']:.1f}°, in {report.robot['room']}"
+            )
         if report.substitutions:
             out_console.print(
                 f"  {len(report.substitutions)} assets substituted (see import_report.json)"

@@ -20,6 +20,7 @@ from holomj.cli_common import (
     out_console,
     write_text,
 )
+from holomj.cli_robot import ProfileOption, RobotOption
 from holomj.errors import InputError
 
 PLANNERS = ("offline", "llm")
@@ -102,6 +103,8 @@ def generate_command(
     strict: Annotated[
         bool, typer.Option("--strict", help="Exit 1 when the scene does not validate ok.")
     ] = False,
+    robot: RobotOption = None,
+    profile: ProfileOption = "default",
     as_json: Annotated[bool, typer.Option("--json", help="Print a JSON summary.")] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
 ) -> None:
@@ -128,6 +131,8 @@ def generate_command(
         llm_api_key=llm_api_key,
         llm_config=llm_config,
         layout_time_s=layout_time,
+        robot=robot,
+        profile=profile,
     )
     show = not (quiet or as_json)
     status = err_console.status("generating", spinner="dots") if show else None

@@ -31,4 +31,9 @@ fi
 spec="."
 if [ -n "$extras" ]; then spec=".[$extras]"; fi
 .venv/bin/python -m pip install -q -e "$spec" 2>&1 | grep -v -E "^(WARNING: Location|  |$)" || true
+# The Panda for --robot panda (and its tests): holomj reads only its MJCF and meshes; its
+# dependencies pin an old mujoco, so it is installed without them (pyproject cannot say so).
+case ",$extras," in *,dev,*)
+  .venv/bin/python -m pip install -q --no-deps dm-robotics-panda 2>&1 | grep -v -E "^(WARNING: Location|  |$)" || true ;;
+esac
 .venv/bin/python -c "import holomj, mujoco; print(f'setup: holomj {holomj.__version__}, mujoco {mujoco.__version__}')"

@@ -7,6 +7,9 @@ Layout of ``OUT/``::
     assets/        every mesh and texture the model needs; also an asset library
                    (library.json + <asset>/asset.json) of the assets the scene uses
     *.json         extra reports handed in by the caller (e.g. import_report.json)
+    objects.json   every object, door and the robot for task design (export/objects_json.py)
+    navmap.json    free floor grid and reachability from the entrance, and navmap.png
+    robot.json     the attached robot and where it stands (only with a robot)
 
 Everything is written into a temporary folder beside OUT and renamed into place at the end, so
 a failure or a rejected input never leaves a half-written OUT behind.
@@ -15,6 +18,7 @@ a failure or a rejected input never leaves a half-written OUT behind.
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 from typing import Any
 
@@ -64,24 +68,73 @@ def export_scene(
     overwrite: bool = False,
     extra_json: dict[str, Any] | None = None,
     extra_text: dict[str, str] | None = None,
+    keep_from: Path | None = None,
 ) -> Path:
     """Write ``compiled`` to ``out`` (see module docstring) and return ``out``.
 
     ``extra_json`` and ``extra_text`` map file names in ``out`` to JSON data and to text, written
-    in the same atomic step as the scene.
+    in the same atomic step as the scene. ``keep_from``: a folder (usually ``out`` itself) whose
+    other entries (reports, renders) are copied over unchanged.
     """
     out = Path(out)
     prepare_output(out, overwrite)
-    extras = {name: dump_json(data) for name, data in (extra_json or {}).items()}
+    extras: dict[str, str | bytes] = {
+        name: dump_json(data) for name, data in (extra_json or {}).items()
+    }
     extras.update(extra_text or {})
+    extras.update(robot_learning_files(compiled))
+    keep = _kept_entries(Path(keep_from), set(extras)) if keep_from is not None else []
+
+    def fill(tmp: Path) -> None:
+        _write_tree(compiled, tmp, extras)
+        _copy_entries(keep, tmp)
+
     try:
-        replace_folder(out, lambda tmp: _write_tree(compiled, tmp, extras))
+        replace_folder(out, fill)
     except OSError as err:
         raise ExportError(f"writing failed: {err}", where=str(out)) from None
     return out
 
 
-def _write_tree(compiled: CompiledScene, root: Path, extras: dict[str, str]) -> None:
+def robot_learning_files(compiled: CompiledScene) -> dict[str, str | bytes]:
+    """``objects.json``, ``navmap.json``, ``navmap.png`` and (with a robot) ``robot.json``."""
+    from holomj.export.navmap import NAVMAP_JSON, NAVMAP_PNG, build_navmap
+    from holomj.export.objects_json import OBJECTS_JSON, objects_record
+    from holomj.robots.records import ROBOT_JSON
+
+    navmap = build_navmap(compiled)
+    files: dict[str, str | bytes] = {
+        OBJECTS_JSON: dump_json(objects_record(compiled)),
+        NAVMAP_JSON: dump_json(navmap.to_json()),
+        NAVMAP_PNG: navmap.to_png(),
+    }
+    if compiled.robot is not None:
+        files[ROBOT_JSON] = dump_json(compiled.robot.model_dump(mode="json"))
+    return files
+
+
+def _kept_entries(folder: Path, written: set[str]) -> list[Path]:
+    """Entries of an earlier export of ``folder`` that this export does not write itself."""
+    if not folder.is_dir():
+        return []
+    from holomj.export.navmap import NAVMAP_JSON, NAVMAP_PNG
+    from holomj.export.objects_json import OBJECTS_JSON
+    from holomj.robots.records import ROBOT_JSON
+
+    own = {SCENE_XML, SCENE_JSON, ASSETS_DIR, OBJECTS_JSON, NAVMAP_JSON, NAVMAP_PNG, ROBOT_JSON}
+    own |= written
+    return sorted(p for p in folder.iterdir() if p.name not in own and not p.name.startswith("."))
+
+
+def _copy_entries(entries: list[Path], root: Path) -> None:
+    for entry in entries:
+        if entry.is_dir():
+            shutil.copytree(entry, root / entry.name, symlinks=True)
+        else:
+            shutil.copy2(entry, root / entry.name)
+
+
+def _write_tree(compiled: CompiledScene, root: Path, extras: dict[str, str | bytes]) -> None:
     (root / SCENE_XML).write_text(compiled.to_xml(), encoding="utf-8")
     scene = scene_for_export(compiled.scene)
     (root / SCENE_JSON).write_text(
@@ -92,8 +145,11 @@ def _write_tree(compiled: CompiledScene, root: Path, extras: dict[str, str]) -> 
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)
     _write_asset_library(compiled, root / ASSETS_DIR)
-    for name, text in sorted(extras.items()):
-        (root / name).write_text(text, encoding="utf-8")
+    for name, content in sorted(extras.items()):
+        if isinstance(content, bytes):
+            (root / name).write_bytes(content)
+        else:
+            (root / name).write_text(content, encoding="utf-8")
 
 
 def _write_asset_library(compiled: CompiledScene, assets_dir: Path) -> None:

@@ -22,10 +22,11 @@ from holomj.errors import HolomjError, InputError
 from holomj.export.writer import export_scene, prepare_output
 from holomj.generate.furnish import RoomContext, furnish_room, retrieve_room
 from holomj.generate.house import build_shell
+from holomj.generate.seeds import stage_rng
 from holomj.generate.small_objects import drop_small_objects
 from holomj.generate.stage_log import Listener, StageLog
 from holomj.library.store import AssetLibrary
-from holomj.mjcf.compiler import compile_scene
+from holomj.mjcf.compiler import check_profile, compile_scene
 from holomj.spec.materials import BUILTIN_MATERIALS
 from holomj.spec.plan import ScenePlan
 from holomj.spec.report import StabilityReport, Thresholds
@@ -58,6 +59,8 @@ class GenerateOptions:
     llm_config: Path | None = None
     layout_time_s: float = 1.0
     sleep: bool = True
+    robot: str | None = None  # registry name or MJCF path, attached before validation
+    profile: str = "default"  # compile profile: default or mjx
 
 
 @dataclass
@@ -141,6 +144,11 @@ def generate_scene(
         )
     out = Path(out)
     prepare_output(out, options.overwrite)
+    check_profile(options.profile)
+    if options.robot is not None:
+        from holomj.robots.registry import resolve_robot
+
+        resolve_robot(options.robot)  # a bad robot fails now, not after the layout
     run = _Run(prompt, out, options, StageLog(listener))
     run.plan_stage()
     run.retrieve_stage()
@@ -283,7 +291,22 @@ class _Run:
         from holomj.physics.settle import run_validation
 
         with self.log.stage("compile"):
-            self.compiled = compile_scene(self.scene, self.library)
+            profile = check_profile(self.options.profile)
+            self.compiled = compile_scene(self.scene, self.library, profile=profile)
+        if self.options.robot is not None:
+            from holomj.robots.attach import add_robot
+
+            with self.log.stage("robot"):
+                self.compiled = add_robot(
+                    self.compiled, self.options.robot, stage_rng(self.seed, "robot")
+                )
+                robot = self.compiled.robot
+                if robot is not None:
+                    self.log.info(
+                        "robot",
+                        f"{robot.name} at ({robot.position[0]:.2f}, {robot.position[1]:.2f}), "
+                        f"yaw {robot.yaw_deg:.1f} deg, in {robot.room}",
+                    )
         with self.log.stage("validate"):
             loaded = loaded_from_compiled(self.compiled, self.library, self.out)
             report = run_validation(loaded, Thresholds(), "as-is", self.options.sleep).report

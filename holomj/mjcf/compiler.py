@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Literal
 
 import mujoco
 
-from holomj.errors import CompileError
+from holomj.errors import CompileError, InputError
 from holomj.library.store import AssetLibrary, LibraryAsset
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.objects import Furniture, ObjectBuilder
@@ -17,7 +18,12 @@ from holomj.mjcf.views import add_cameras, add_lights
 from holomj.spec.scene import SceneSpec
 from mjcf_templates import template_path
 
+if TYPE_CHECKING:
+    from holomj.robots.records import RobotRecord
+
 BASE_TEMPLATE = "base_scene.xml"
+Profile = Literal["default", "mjx"]
+PROFILES: tuple[str, ...] = ("default", "mjx")
 
 
 @dataclass
@@ -30,25 +36,42 @@ class CompiledScene:
     files: dict[str, bytes]
     assets: dict[str, LibraryAsset] = field(default_factory=dict)
     furniture: Furniture = "as-is"
+    profile: Profile = "default"
+    robot: RobotRecord | None = None  # set by holomj.robots.attach
 
     def to_xml(self) -> str:
         """The scene as MJCF text, with paths relative to the exported folder."""
         return self.spec.to_xml()
 
 
+def check_profile(profile: str) -> Profile:
+    """``profile`` if it is a known compile profile, else an InputError listing them."""
+    if profile not in PROFILES:
+        raise InputError(
+            f"unknown profile {profile!r}", where="--profile", fix=f"use {' or '.join(PROFILES)}"
+        )
+    return profile  # type: ignore[return-value]
+
+
 def compile_scene(
-    scene: SceneSpec, library: AssetLibrary, *, furniture: Furniture = "as-is"
+    scene: SceneSpec,
+    library: AssetLibrary,
+    *,
+    furniture: Furniture = "as-is",
+    profile: Profile = "default",
 ) -> CompiledScene:
     """Build the MjSpec for ``scene`` and compile it.
 
     ``furniture`` overrides the ``static`` flag of floor-standing furniture: ``static`` (no
     joints: cheap, stable), ``free`` (free joints: what validation uses, so a badly placed
     cabinet shows up), or ``as-is``. Wall- and ceiling-mounted assets are always static.
+    ``profile`` ``mjx`` makes a model MJX accepts (see :mod:`holomj.mjcf.mjx_profile`).
 
     Raises :class:`~holomj.errors.AssetNotFoundError` for objects whose asset the library lacks,
     :class:`~holomj.errors.SpecError` for geometry that cannot be built and
     :class:`~holomj.errors.CompileError` when MuJoCo rejects the model.
     """
+    check_profile(profile)
     spec = mujoco.MjSpec.from_file(str(template_path(BASE_TEMPLATE)))
     spec.modelname = _model_name(scene.name)
     ctx = BuildContext(spec=spec, scene=scene)
@@ -63,6 +86,10 @@ def compile_scene(
     add_lights(ctx)
     add_cameras(ctx)
     spec.assets = dict(ctx.files)
+    if profile == "mjx":
+        from holomj.mjcf.mjx_profile import apply_mjx_profile
+
+        apply_mjx_profile(spec)
     try:
         model = spec.compile()
     except ValueError as err:
@@ -74,6 +101,7 @@ def compile_scene(
         files=dict(sorted(ctx.files.items())),
         assets=dict(sorted(objects.used.items())),
         furniture=furniture,
+        profile=profile,
     )
 
 

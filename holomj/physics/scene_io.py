@@ -20,6 +20,7 @@ from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.loading import load_model_file
 from holomj.mjcf.objects import Furniture
+from holomj.robots.attach import attach_saved_robot
 from holomj.spec.scene import SceneSpec
 from holomj.spec.scene_file import read_scene_file
 
@@ -66,6 +67,7 @@ def load_scene(
         scene = read_scene_file(folder / SCENE_JSON)
         library = library or AssetLibrary.open(folder / ASSETS_DIR)
         compiled = compile_scene(scene, library, furniture=furniture)
+        compiled = attach_saved_robot(compiled, folder)
         return loaded_from_compiled(compiled, library, path, folder)
     if path.is_dir():
         raise FormatError(

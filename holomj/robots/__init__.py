@@ -1,0 +1,29 @@
+"""Robots in scenes: which robots exist, preparing their MJCF, where they stand, attaching them.
+
+- :mod:`registry`: ``panda`` / ``jaco`` / an MJCF path -> :class:`RobotSource`
+- :mod:`prepare`: fixed base, home pose as ``qpos0``, files embedded, footprint
+- :mod:`occupancy`, :mod:`reach`, :mod:`placement`: floor grid, reachability, the spot
+- :mod:`attach`: put it into a compiled scene (``robot.json`` to put it back on recompile)
+- :mod:`folder`: ``holomj add-robot OUT SPEC``
+"""
+
+from holomj.robots.attach import add_robot, attach_saved_robot, read_robot_record
+from holomj.robots.placement import Spot, choose_spot
+from holomj.robots.prepare import PreparedRobot, prepare_robot
+from holomj.robots.records import Footprint, RobotRecord
+from holomj.robots.registry import RobotSource, available_robots, resolve_robot
+
+__all__ = [
+    "Footprint",
+    "PreparedRobot",
+    "RobotRecord",
+    "RobotSource",
+    "Spot",
+    "add_robot",
+    "attach_saved_robot",
+    "available_robots",
+    "choose_spot",
+    "prepare_robot",
+    "read_robot_record",
+    "resolve_robot",
+]

@@ -1,0 +1,226 @@
+"""Attach a robot to a compiled scene: choose its spot, put it there, recompile, check it.
+
+The robot goes under the prefix ``robot/``, inside a static mount body ``robot/base_mount`` at
+its spot (so the XML holds no ``<frame>``), with its files under ``assets/robot/`` and its
+prepared MJCF as ``assets/robot.xml``; :class:`~holomj.robots.records.RobotRecord` (written as
+``robot.json``) says where it stands, so :func:`attach_saved_robot` can put it back when a
+folder is recompiled from its ``scene.json``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from holomj.errors import CompileError, FormatError, HolomjError, InputError, SpecError
+from holomj.mjcf.compiler import CompiledScene
+from holomj.mjcf.geometry import yaw_quat
+from holomj.robots.occupancy import build_floor_grid
+from holomj.robots.placement import DEFAULT_CLEARANCE_M, Spot, choose_spot
+from holomj.robots.prepare import PreparedRobot, prepare_robot
+from holomj.robots.reach import compute_reach
+from holomj.robots.records import ROBOT_JSON, ROBOT_PREFIX, ROBOT_XML, RobotRecord
+from holomj.robots.registry import RobotSource, resolve_robot
+from holomj.spec.base import read_json, validate_model
+
+MOUNT_BODY = f"{ROBOT_PREFIX}base_mount"
+PENETRATION_TOLERANCE_M = 0.001
+ASSETS_DIR = "assets"  # as holomj.export.writer.ASSETS_DIR (not imported: no cycle)
+
+
+def add_robot(
+    compiled: CompiledScene,
+    spec: str,
+    rng: np.random.Generator,
+    *,
+    clearance: float = DEFAULT_CLEARANCE_M,
+    room: str | None = None,
+) -> CompiledScene:
+    """``compiled`` with the robot ``spec`` (a registry name or an MJCF path) on a free spot.
+
+    Raises :class:`~holomj.errors.InputError` for an unknown robot or when no spot is free.
+    """
+    source = resolve_robot(spec)
+    prepared = prepare_robot(source)
+    grid = build_floor_grid(compiled.model, compiled.scene)
+    reach = compute_reach(grid, compiled.scene)
+    spot = choose_spot(
+        grid, reach, compiled.scene, prepared.footprint, rng, clearance=clearance, room=room
+    )
+    record = place_robot(prepared, spot)
+    return attach_prepared(compiled, prepared.spec, prepared.files, record, prepared.to_xml())
+
+
+def place_robot(prepared: PreparedRobot, spot: Spot) -> RobotRecord:
+    """The record of ``prepared`` standing at ``spot`` (for callers choosing spots themselves)."""
+    return RobotRecord(
+        spec=prepared.source.spec,
+        name=prepared.source.name,
+        source=_source_label(prepared.source),
+        package=prepared.source.package,
+        xml=f"{ASSETS_DIR}/{ROBOT_XML}",
+        position=(spot.x, spot.y, 0.0),
+        yaw_deg=spot.yaw_deg,
+        room=spot.room,
+        footprint=prepared.footprint,
+        clearance_m=spot.clearance_m,
+        home={f"{ROBOT_PREFIX}{k}": round(float(v), 9) for k, v in prepared.home.items()},
+        notes=prepared.notes,
+    )
+
+
+def attach_prepared(
+    compiled: CompiledScene,
+    robot: mujoco.MjSpec,
+    files: dict[str, bytes],
+    record: RobotRecord,
+    robot_xml: str,
+) -> CompiledScene:
+    """Attach ``robot`` at ``record``'s pose to (a copy of) ``compiled``'s spec and recompile.
+
+    Raises :class:`~holomj.errors.HolomjError` when the robot interpenetrates the scene at
+    t = 0, :class:`~holomj.errors.CompileError` when MuJoCo rejects the result.
+    """
+    if compiled.robot is not None:
+        raise InputError("the scene already has a robot", where=compiled.robot.spec)
+    prefix_owner = record.prefix.rstrip("/")
+    scene = compiled.scene
+    for kind, items in (
+        ("objects", scene.objects),
+        ("doors", scene.doors),
+        ("windows", scene.windows),
+    ):
+        if any(item.id == prefix_owner for item in items):
+            raise InputError(
+                f"the id {prefix_owner!r} is the robot's name prefix",
+                where=f"{kind}: {prefix_owner}",
+                fix="rename that element of the scene",
+            )
+    spec = compiled.spec.copy()
+    merged = dict(compiled.files)
+    for key, data in [*files.items(), (ROBOT_XML, robot_xml.encode("utf-8"))]:
+        if key in merged and merged[key] != data:
+            raise SpecError(f"two different files would be written to assets/{key}")
+        merged[key] = data
+    if spec.body(MOUNT_BODY) is not None:
+        raise InputError("the scene already has a robot mount", where=MOUNT_BODY)
+    mount = spec.worldbody.add_body(
+        name=MOUNT_BODY,
+        pos=list(record.position),
+        quat=list(yaw_quat(math.radians(record.yaw_deg))),
+    )
+    mount.info = f"robot {record.name} ({record.spec})"
+    # MuJoCo 3.17 copies the child into the scene, then prefixes the *original* child's file
+    # names in place: attach a throwaway copy so that ``robot`` stays usable.
+    spec.copy_during_attach = True
+    try:
+        spec.attach(robot.copy(), prefix=record.prefix, frame=mount.add_frame())
+    except ValueError as err:
+        raise CompileError(f"cannot attach the robot: {' '.join(str(err).split())}") from None
+    if compiled.profile == "mjx":
+        from holomj.mjcf.mjx_profile import apply_mjx_profile
+
+        apply_mjx_profile(spec)
+    spec.assets = merged
+    try:
+        model = spec.compile()
+    except ValueError as err:
+        raise CompileError(
+            f"MuJoCo rejected the scene with the robot: {' '.join(str(err).split())}"
+        ) from None
+    _check_no_penetration(model, record)
+    return dataclasses.replace(
+        compiled, spec=spec, model=model, files=dict(sorted(merged.items())), robot=record
+    )
+
+
+def _check_no_penetration(model: mujoco.MjModel, record: RobotRecord) -> None:
+    """No robot collider may interpenetrate anything at t = 0 (static pairs included)."""
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    mount = model.body(MOUNT_BODY).id
+    robot_body = np.zeros(model.nbody, dtype=bool)
+    robot_body[mount] = True
+    for body in range(mount + 1, model.nbody):  # parents come before children
+        robot_body[body] = robot_body[model.body_parentid[body]]
+    colliding = (model.geom_contype != 0) | (model.geom_conaffinity != 0)
+    on_robot = robot_body[model.geom_bodyid]
+    not_plane = model.geom_type != mujoco.mjtGeom.mjGEOM_PLANE
+    others = np.flatnonzero(colliding & ~on_robot & not_plane)
+    low, high = _aabbs(model, data)
+    fromto = np.zeros(6)
+    for g1 in np.flatnonzero(colliding & on_robot):
+        near = others[
+            np.all(low[others] <= high[g1] + 0.01, axis=1)
+            & np.all(low[g1] <= high[others] + 0.01, axis=1)
+        ]
+        for g2 in near:
+            dist = mujoco.mj_geomDistance(model, data, int(g1), int(g2), 0.01, fromto)
+            if dist < -PENETRATION_TOLERANCE_M:
+                raise HolomjError(
+                    f"robot geom {model.geom(g1).name or g1} interpenetrates "
+                    f"{model.geom(int(g2)).name or g2} by {-dist * 1000:.1f} mm at t = 0",
+                    where=f"robot {record.name} at ({record.position[0]:.2f}, "
+                    f"{record.position[1]:.2f})",
+                    fix="report this: the spot was chosen clear of every collider",
+                )
+
+
+def _aabbs(model: mujoco.MjModel, data: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
+    centre = model.geom_aabb[:, :3]
+    half = model.geom_aabb[:, 3:]
+    xmat = data.geom_xmat.reshape(-1, 3, 3)
+    world = data.geom_xpos + np.einsum("gij,gj->gi", xmat, centre)
+    extent = np.einsum("gij,gj->gi", np.abs(xmat), half)
+    return world - extent, world + extent
+
+
+def _source_label(source: RobotSource) -> str:
+    """The source MJCF, relative to its package when it came from one (portable)."""
+    if source.package is None:
+        return str(source.xml)
+    parts = source.xml.parts
+    for index in range(len(parts) - 1, -1, -1):
+        if parts[index] in ("dm_robotics", "dm_control"):
+            return f"{source.package}:{'/'.join(parts[index:])}"
+    return str(source.xml)
+
+
+def read_robot_record(folder: Path) -> RobotRecord | None:
+    """``folder/robot.json``, or None when the folder has no robot."""
+    path = Path(folder) / ROBOT_JSON
+    if not path.is_file():
+        return None
+    return validate_model(RobotRecord, read_json(path), str(path))
+
+
+def attach_saved_robot(compiled: CompiledScene, folder: Path) -> CompiledScene:
+    """Put back the robot a folder was exported with (``robot.json`` + ``assets/robot.xml``);
+    ``compiled`` unchanged when the folder has none."""
+    record = read_robot_record(folder)
+    if record is None:
+        return compiled
+    assets = Path(folder) / ASSETS_DIR
+    xml_path = Path(folder) / record.xml
+    try:
+        xml = xml_path.read_text(encoding="utf-8")
+    except OSError as err:
+        raise FormatError(
+            f"cannot read the robot MJCF: {err.strerror or err}", where=str(xml_path)
+        ) from None
+    files = {
+        path.relative_to(assets).as_posix(): path.read_bytes()
+        for path in sorted((assets / "robot").rglob("*"))
+        if path.is_file()
+    }
+    try:
+        robot = mujoco.MjSpec.from_string(xml, assets=files)
+    except ValueError as err:
+        raise FormatError(
+            f"MuJoCo cannot load the robot: {' '.join(str(err).split())}", where=str(xml_path)
+        ) from None
+    return attach_prepared(compiled, robot, files, record, xml)

@@ -1,0 +1,73 @@
+"""``holomj add-robot OUT SPEC``: put a robot into an exported scene folder, atomically.
+
+The folder is recompiled from its ``scene.json`` with its own ``assets/`` library, the robot is
+placed and attached, a short simulation checks for MuJoCo warnings, and the folder is rewritten
+in one atomic step; its other files (reports, renders) are kept as they were.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import cast
+
+from holomj.errors import FormatError, InputError
+from holomj.export.writer import ASSETS_DIR, SCENE_JSON, export_scene
+from holomj.library.store import AssetLibrary
+from holomj.mjcf.compiler import Profile, compile_scene
+from holomj.physics.smoke import simulate
+from holomj.robots.attach import add_robot, read_robot_record
+from holomj.robots.placement import DEFAULT_CLEARANCE_M
+from holomj.robots.records import RobotRecord
+from holomj.spec.scene_file import read_scene_file
+
+SMOKE_SECONDS = 1.0
+
+
+@dataclass(frozen=True)
+class AddRobotResult:
+    """The robot that was attached and the MuJoCo warnings of the smoke run."""
+
+    folder: Path
+    robot: RobotRecord
+    warnings: dict[str, int]
+
+
+def add_robot_to_folder(
+    folder: Path,
+    spec: str,
+    *,
+    seed: int = 0,
+    clearance: float = DEFAULT_CLEARANCE_M,
+    room: str | None = None,
+    profile: Profile = "default",
+    replace: bool = False,
+) -> AddRobotResult:
+    """Attach the robot ``spec`` to the scene folder ``folder`` (see the module docstring).
+
+    Raises :class:`~holomj.errors.InputError` when the folder is not a holomj scene, already
+    has a robot (unless ``replace``), the robot is unknown or no spot is free.
+    """
+    from holomj.generate.seeds import stage_rng
+
+    folder = Path(folder)
+    if not (folder / SCENE_JSON).is_file() or not (folder / ASSETS_DIR / "library.json").is_file():
+        raise FormatError(
+            "not a holomj scene folder (no scene.json and assets/library.json)",
+            where=str(folder),
+            fix="pass a folder written by 'holomj compile' or 'holomj generate'",
+        )
+    existing = read_robot_record(folder)
+    if existing is not None and not replace:
+        raise InputError(
+            f"the scene already has a robot ({existing.spec})",
+            where=str(folder),
+            fix="pass --replace to put the new robot in its place",
+        )
+    scene = read_scene_file(folder / SCENE_JSON)
+    library = AssetLibrary.open(folder / ASSETS_DIR)
+    compiled = compile_scene(scene, library, profile=profile)
+    compiled = add_robot(compiled, spec, stage_rng(seed, "robot"), clearance=clearance, room=room)
+    warnings = simulate(compiled.model, SMOKE_SECONDS).warnings
+    export_scene(compiled, folder, overwrite=True, keep_from=folder)
+    return AddRobotResult(folder, cast(RobotRecord, compiled.robot), warnings)

@@ -81,8 +81,9 @@ def generate_command(
         Path | None,
         typer.Option(
             "--clip-weights",
-            help="Local open-clip weights for the visual retrieval term (needs holomj[clip]; "
-            "default $HOLOMJ_CLIP_WEIGHTS; absent: the term is left out).",
+            help="Local open-clip weights for the visual retrieval term (needs the clip extra: "
+            "pip install 'holomj\\[clip]'; default $HOLOMJ_CLIP_WEIGHTS; absent: the term is "
+            "left out).",
         ),
     ] = None,
     clip_model: Annotated[

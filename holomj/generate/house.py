@@ -47,20 +47,13 @@ def room_request(room: PlanRoom) -> RoomRequest:
     if room.size is not None:
         lo = max(1.0, min(lo, *room.size))
         hi = min(MAX_SIDE_M, max(hi, *room.size))
-        return RoomRequest(
-            id=room.id,
-            type=room.type,
-            size=room.size,
-            adjacent_to=room.adjacent_to,
-            min_side=lo,
-            max_side=hi,
-        )
-    if room.area_m2 is not None:
+    elif room.area_m2 is not None:
         lo = max(1.0, min(lo, math.sqrt(room.area_m2) * 0.75))
         hi = min(MAX_SIDE_M, max(hi, math.sqrt(room.area_m2) * 1.3))
     return RoomRequest(
         id=room.id,
         type=room.type,
+        size=room.size,
         area_m2=room.area_m2,
         adjacent_to=room.adjacent_to,
         min_side=lo,

@@ -25,7 +25,13 @@ from shapely.geometry import Point, Polygon, box
 
 from holomj.errors import HolomjError
 from holomj.generate.seeds import stage_rng
-from holomj.layout.room_problem import LayoutDoor, LayoutObject, LayoutWindow, RoomProblem
+from holomj.layout.room_problem import (
+    LayoutDoor,
+    LayoutObject,
+    LayoutSettings,
+    LayoutWindow,
+    RoomProblem,
+)
 from holomj.layout.solve import LayoutResult, Placement, solve_room
 from holomj.layout.wall_objects import FloorItem, WallObjectRequest, place_wall_objects
 from holomj.library.store import AssetLibrary
@@ -34,6 +40,9 @@ from holomj.spec.scene import Door, Room, SceneObject, Window
 from holomj.spec.walls import Wall
 
 LAYOUT_MARGIN_M = 0.03  # beyond half the interior wall thickness
+# The layout keeps a walkway this wide (radius) between every two doors of a room: 5 cm more than
+# the navigation map's agent, so that its finer grid and real collider boxes still find the path.
+WALKER_RADIUS_M = 0.3
 TALL_STATIC_M = 1.5
 FIXED_CATEGORIES = frozenset(
     {
@@ -289,6 +298,7 @@ def _problem(
         windows=windows,
         objects=objects,
         constraints_text="\n".join(plan_room.constraints) or None,
+        settings=LayoutSettings(walker_radius_m=WALKER_RADIUS_M),
     )
 
 

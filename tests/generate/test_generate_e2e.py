@@ -55,5 +55,9 @@ def test_generate_gives_a_valid_stable_scene_with_the_requested_objects(
                     assert object_id(room.id, instance) in scene_ids, (prompt, instance)
     assert result.record["counts"]["furniture"] >= 2
 
+    # Every room can be walked into from the entrance, furniture and all.
+    navmap = json.loads((out / "navmap.json").read_text())
+    assert all(room["reachable"] for room in navmap["rooms"].values()), (prompt, navmap["rooms"])
+
     model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
     assert model.nbody > len(scene_ids)

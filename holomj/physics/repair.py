@@ -29,12 +29,13 @@ import numpy as np
 
 from holomj.atomic import replace_folder
 from holomj.errors import InputError
-from holomj.export.writer import ASSETS_DIR, SCENE_JSON, SCENE_XML, export_scene
+from holomj.export.writer import export_scene
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.objects import Furniture
 from holomj.physics.audit import GeomOwners, find_overlaps
 from holomj.physics.scene_io import LoadedScene, load_scene
 from holomj.physics.settle import ObjectTrack, Validation, run_validation
+from holomj.robots.attach import attach_saved_robot
 from holomj.spec.report import RepairAction, Thresholds, Unsaved
 from holomj.spec.scene import SceneObject, SceneSpec
 
@@ -70,7 +71,10 @@ def repair_folder(
         )
     original = loaded.scene
     separated, why, unsaved = separate(loaded, th)
-    compiled = compile_scene(separated, loaded.library, furniture=furniture)
+    # The folder's robot (if any) is part of the scene being repaired and of what is written back.
+    compiled = attach_saved_robot(
+        compile_scene(separated, loaded.library, furniture=furniture), loaded.folder
+    )
     objects = {o.id: compiled.model.body(f"{o.id}/body").id for o in separated.objects}
     settled_scene = LoadedScene(
         loaded.source, compiled.model, objects, separated, loaded.library, compiled, loaded.folder
@@ -82,7 +86,7 @@ def repair_folder(
         for o in validation.report.objects
         if o.name in unstable and o.name not in {u.name for u in unsaved}
     ]
-    final = compile_scene(baked, loaded.library)
+    final = attach_saved_robot(compile_scene(baked, loaded.library), loaded.folder)
     add_settled_key(final, compiled.model, validation.result.data)
     write_folder(final, loaded.folder)
     repaired = moves(original, baked, why)
@@ -269,15 +273,16 @@ def _qpos_width(kind: int) -> int:
 
 
 def write_folder(compiled: CompiledScene, folder: Path) -> None:
-    """Re-export ``folder`` atomically, keeping its other files (reports, renders)."""
+    """Re-export ``folder`` atomically, keeping the other files (reports, renders) that the
+    export does not write afresh."""
     folder = Path(folder).absolute()
     staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.repair-", dir=folder.parent))
     try:
         fresh = export_scene(compiled, staging / "out")
         for item in sorted(folder.iterdir()):
-            if item.name in (SCENE_XML, SCENE_JSON, ASSETS_DIR):
-                continue
             target = fresh / item.name
+            if target.exists():  # written afresh by the export (scene, assets, objects, navmap)
+                continue
             if item.is_dir():
                 shutil.copytree(item, target, symlinks=True)
             else:

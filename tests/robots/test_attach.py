@@ -149,3 +149,28 @@ def test_attaching_leaves_the_prepared_robot_usable(two_room_compiled: CompiledS
         compiled = attach_prepared(two_room_compiled, jaco.spec, jaco.files, record, before)
         assert 'file="robot/base.stl"' in compiled.to_xml()
     assert jaco.to_xml() == before
+
+
+def test_validate_and_repair_keep_the_robot(with_jaco: CompiledScene, tmp_path: Path) -> None:
+    from holomj.physics.repair import repair_folder
+    from holomj.physics.settle import validate_path
+
+    out = export_scene(with_jaco, tmp_path / "out")
+    (out / "notes.txt").write_text("kept")
+    stale = json.loads((out / "objects.json").read_text())
+    report = validate_path(out, furniture="as-is")
+    assert report.ok
+    outcome = repair_folder(out, furniture="as-is")
+    assert not outcome.unsaved
+    model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+    assert model.nbody == with_jaco.model.nbody  # the robot is still there
+    assert read_robot_record(out) == with_jaco.robot
+    assert (out / "assets" / "robot.xml").is_file()
+    assert (out / "notes.txt").read_text() == "kept"
+    # objects.json is written afresh from the repaired scene, not copied from before
+    fresh = json.loads((out / "objects.json").read_text())
+    assert fresh.keys() == stale.keys()
+    scene = json.loads((out / "scene.json").read_text())
+    poses = {o["id"]: o["position"] for o in scene["objects"]}
+    for obj in fresh["objects"]:
+        np.testing.assert_allclose(obj["position"], poses[obj["id"]], atol=1e-6)

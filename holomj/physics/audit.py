@@ -19,6 +19,7 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
+from holomj.physics.bounds import world_aabbs
 from holomj.physics.scene_io import LoadedScene
 from holomj.spec.report import ObjectDefect, PenetrationPair
 from holomj.spec.scene import SceneSpec
@@ -68,16 +69,6 @@ class GeomOwners:
     def geom_name(self, geom: int) -> str:
         """The geom's name, or ``geom_<id>`` for an unnamed one."""
         return self.model.geom(geom).name or f"geom_{geom}"
-
-
-def world_aabbs(model: mujoco.MjModel, data: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
-    """World-aligned bounding boxes (low, high corners) of every geom at the current pose."""
-    centre = model.geom_aabb[:, :3]
-    half = model.geom_aabb[:, 3:]
-    xmat = data.geom_xmat.reshape(-1, 3, 3)
-    world_centre = data.geom_xpos + np.einsum("gij,gj->gi", xmat, centre)
-    world_half = np.einsum("gij,gj->gi", np.abs(xmat), half)
-    return world_centre - world_half, world_centre + world_half
 
 
 def candidate_pairs(

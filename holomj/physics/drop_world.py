@@ -29,6 +29,7 @@ from mujoco import rollout
 
 from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene
+from holomj.physics.bounds import world_aabbs
 
 FULL = mujoco.mjtState.mjSTATE_FULLPHYSICS
 SPAWN_CLEARANCE = 5e-4  # a candidate closer than this to any collider is rejected at spawn
@@ -201,7 +202,7 @@ class DropWorld:
         A cheap world-AABB test picks the pairs; ``mj_geomDistance`` decides.
         """
         m, d = self.model, self._load(state)
-        lo, hi = self._world_aabbs(d)
+        lo, hi = world_aabbs(self.model, d)
         own = self.bodies[object_id].geoms
         others = self._active.copy()
         others[own] = False
@@ -216,14 +217,6 @@ class DropWorld:
                 if mujoco.mj_geomDistance(m, d, int(g), int(h), 0.01, None) < margin:
                     return m.geom(int(h)).name or f"geom {h}"
         return None
-
-    def _world_aabbs(self, d: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
-        aabb = self.model.geom_aabb
-        centre, half = aabb[:, :3], aabb[:, 3:]
-        mats = d.geom_xmat.reshape(-1, 3, 3)
-        world_centre = d.geom_xpos + np.einsum("gij,gj->gi", mats, centre)
-        world_half = np.einsum("gij,gj->gi", np.abs(mats), half)
-        return world_centre - world_half, world_centre + world_half
 
     # -- drops ------------------------------------------------------------------------------
 

@@ -19,6 +19,7 @@ import numpy as np
 from holomj.errors import CompileError, FormatError, HolomjError, InputError, SpecError
 from holomj.mjcf.compiler import CompiledScene
 from holomj.mjcf.geometry import yaw_quat
+from holomj.physics.bounds import world_aabbs
 from holomj.robots.occupancy import build_floor_grid
 from holomj.robots.placement import DEFAULT_CLEARANCE_M, Spot, choose_spot
 from holomj.robots.prepare import PreparedRobot, prepare_robot
@@ -151,7 +152,7 @@ def _check_no_penetration(model: mujoco.MjModel, record: RobotRecord) -> None:
     on_robot = robot_body[model.geom_bodyid]
     not_plane = model.geom_type != mujoco.mjtGeom.mjGEOM_PLANE
     others = np.flatnonzero(colliding & ~on_robot & not_plane)
-    low, high = _aabbs(model, data)
+    low, high = world_aabbs(model, data)
     fromto = np.zeros(6)
     for g1 in np.flatnonzero(colliding & on_robot):
         near = others[
@@ -168,15 +169,6 @@ def _check_no_penetration(model: mujoco.MjModel, record: RobotRecord) -> None:
                     f"{record.position[1]:.2f})",
                     fix="report this: the spot was chosen clear of every collider",
                 )
-
-
-def _aabbs(model: mujoco.MjModel, data: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
-    centre = model.geom_aabb[:, :3]
-    half = model.geom_aabb[:, 3:]
-    xmat = data.geom_xmat.reshape(-1, 3, 3)
-    world = data.geom_xpos + np.einsum("gij,gj->gi", xmat, centre)
-    extent = np.einsum("gij,gj->gi", np.abs(xmat), half)
-    return world - extent, world + extent
 
 
 def _source_label(source: RobotSource) -> str:

@@ -182,13 +182,12 @@ def plan_command(
 ) -> None:
     """Plan a scene from a prompt without building it: print (or write) the ScenePlan JSON."""
     from holomj.export.writer import dump_json
-    from holomj.generate.runner import GenerateOptions, make_plan
+    from holomj.generate.runner import PlanOptions, make_plan
     from holomj.generate.stage_log import StageLog
     from holomj.library.store import AssetLibrary
 
     guard(lambda: _check_planner(planner))
-    options = GenerateOptions(
-        library=Path("."),
+    options = PlanOptions(
         seed=seed,
         planner=planner,  # type: ignore[arg-type]
         text_model=text_model,

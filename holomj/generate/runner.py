@@ -31,12 +31,26 @@ from holomj.spec.materials import BUILTIN_MATERIALS
 from holomj.spec.plan import ScenePlan
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
+from holomj.spec.walls import derive_walls
 
 PLAN_JSON = "plan.json"
 REPORT_JSON = "report.json"
 GENERATE_JSON = "generate.json"
 GENERATE_LOG = "generate.log"
 MAX_PROMPT_CHARS = 2000
+
+
+@dataclass(frozen=True)
+class PlanOptions:
+    """What the plan stage needs: the seed, which planner, the text model and the LLM server."""
+
+    seed: int = 0
+    planner: Literal["offline", "llm"] = "offline"
+    text_model: Path | None = None
+    llm_base_url: str | None = None
+    llm_model: str | None = None
+    llm_api_key: str | None = None
+    llm_config: Path | None = None
 
 
 @dataclass(frozen=True)
@@ -61,6 +75,18 @@ class GenerateOptions:
     sleep: bool = True
     robot: str | None = None  # registry name or MJCF path, attached before validation
     profile: str = "default"  # compile profile: default or mjx
+
+    def plan_options(self) -> PlanOptions:
+        """The subset of these options the plan stage reads."""
+        return PlanOptions(
+            seed=self.seed,
+            planner=self.planner,
+            text_model=self.text_model,
+            llm_base_url=self.llm_base_url,
+            llm_model=self.llm_model,
+            llm_api_key=self.llm_api_key,
+            llm_config=self.llm_config,
+        )
 
 
 @dataclass
@@ -96,15 +122,16 @@ def scene_name(prompt: str) -> str:
     return "_".join(words)[:64] or "scene"
 
 
-def make_plan(
-    prompt: str, options: GenerateOptions, categories: list[str], log: StageLog
-) -> ScenePlan:
+def make_plan(prompt: str, options: PlanOptions, categories: list[str], log: StageLog) -> ScenePlan:
     """The plan of ``prompt``: offline, or from the LLM with the offline planner as fallback."""
     from holomj.plan.offline import plan_offline
     from holomj.retrieval.text import text_encoder
 
     def offline(text: str, seed: int) -> ScenePlan:
-        return plan_offline(text, seed, encoder=text_encoder(options.text_model))
+        # Without a chosen model the planner loads the default one itself, and only when a
+        # scene type or object has to be matched by embedding.
+        encoder = text_encoder(options.text_model) if options.text_model is not None else None
+        return plan_offline(text, seed, encoder=encoder)
 
     if options.planner == "offline":
         return offline(prompt, options.seed)
@@ -180,7 +207,9 @@ class _Run:
 
     def plan_stage(self) -> None:
         with self.log.stage("plan"):
-            plan = make_plan(self.prompt, self.options, self.library.categories(), self.log)
+            plan = make_plan(
+                self.prompt, self.options.plan_options(), self.library.categories(), self.log
+            )
             furniture = sum(o.quantity for r in plan.rooms for o in r.objects)
             self.log.info(
                 "plan",
@@ -222,7 +251,7 @@ class _Run:
             for warning in shell.warnings:
                 log.info("layout", f"warning: {warning}")
             context = RoomContext(
-                walls=SceneSpec(rooms=shell.rooms).walls,
+                walls=derive_walls(shell.rooms),
                 doors=shell.doors,
                 windows=shell.windows,
                 wall_height=plan.wall_height,

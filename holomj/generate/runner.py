@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
@@ -97,7 +97,11 @@ class GenerateResult:
     plan: ScenePlan
     report: StabilityReport
     record: dict[str, Any]
-    timings: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def timings(self) -> dict[str, float]:
+        """Wall time per stage in seconds (as in ``generate.json``)."""
+        return self.record["timings_s"]
 
     def summary(self) -> dict[str, Any]:
         """Short JSON-able summary for the CLI."""
@@ -187,7 +191,7 @@ def generate_scene(
         _render(out, options, run.log)
     _write_log(out / GENERATE_LOG, run.log)
     run.record["timings_s"] = dict(run.log.timings)
-    return GenerateResult(out, run.plan, run.report, run.record, dict(run.log.timings))
+    return GenerateResult(out, run.plan, run.report, run.record)
 
 
 class _Run:

@@ -17,6 +17,7 @@ import mujoco
 import numpy as np
 
 from holomj.errors import CompileError, FormatError, HolomjError, InputError, SpecError
+from holomj.export.writer import ASSETS_DIR
 from holomj.mjcf.compiler import CompiledScene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.physics.bounds import world_aabbs
@@ -30,7 +31,6 @@ from holomj.spec.base import read_json, validate_model
 
 MOUNT_BODY = f"{ROBOT_PREFIX}base_mount"
 PENETRATION_TOLERANCE_M = 0.001
-ASSETS_DIR = "assets"  # as holomj.export.writer.ASSETS_DIR (not imported: no cycle)
 
 
 def add_robot(

@@ -39,6 +39,10 @@ Conventions (see :mod:`holomj.importers.frames`)
   doors as wide as the shared wall allows (at most 4 m).
 * Windows: ``Window_Fixed`` / ``Window_Hung`` / ``Window_Slider`` -> ``fixed`` / ``hung`` /
   ``slider`` (``fixed`` when the asset says nothing).
+* Ids are sanitised (:mod:`holomj.importers.ids`). An id used twice among the rooms, among the
+  doors and windows, or among the objects (``children`` included) is an error naming both
+  places; ids that only clash once sanitised get a suffix and a warning. Lights with the same
+  id are renamed with a warning (they take no space).
 """
 
 from __future__ import annotations
@@ -47,6 +51,7 @@ import math
 import re
 from collections import Counter
 from dataclasses import dataclass
+from itertools import chain
 from pathlib import PurePath
 from typing import Any
 
@@ -66,7 +71,7 @@ from holomj.importers.frames import (
     unity_point,
     yaw_from_unity,
 )
-from holomj.importers.ids import sanitise
+from holomj.importers.ids import listed_ids, sanitise
 from holomj.importers.jsonpath import Node
 from holomj.importers.result import ImportResult
 from holomj.importers.state import ImportState
@@ -131,6 +136,7 @@ class _ProcthorImport(ImportState):
         room_nodes = self.root.get("rooms").items()
         if not room_nodes:
             raise self.root.get("rooms").error("a house needs at least one room")
+        self._check_ids()
         self.holodeck = self._looks_like_holodeck(room_nodes)
         self._read_walls()
         self.wall_height = self._wall_height()
@@ -154,6 +160,21 @@ class _ProcthorImport(ImportState):
             "source": self.source,
         }
         return self.result(fields, "holodeck" if self.holodeck else "procthor")
+
+    def _check_ids(self) -> None:
+        """Reject ids used twice among the rooms, the openings (doors and windows share holomj's
+        namespace) or the objects (nested ``children`` included), naming both places."""
+        data = self.root.value
+        self.check_ids(
+            [
+                listed_ids(data.get("rooms"), "rooms"),
+                chain(
+                    listed_ids(data.get("doors"), "doors"),
+                    listed_ids(data.get("windows"), "windows"),
+                ),
+                listed_ids(data.get("objects"), "objects", children="children"),
+            ]
+        )
 
     def _looks_like_holodeck(self, room_nodes: list[Node]) -> bool:
         if self.root.has("wall_height") or self.root.has("open_walls"):
@@ -206,7 +227,7 @@ class _ProcthorImport(ImportState):
             path = f"rooms[{index}]"
             node.dict()
             raw_id = node.str_("id")
-            room_id = self.room_ids.new(raw_id)
+            room_id = self.room_ids.new(raw_id, f"{path}.id")
             poly_node = node.get("floorPolygon")
             points = []
             for p in poly_node.items():
@@ -300,7 +321,9 @@ class _ProcthorImport(ImportState):
         except SpecError as err:
             raise err.located(f"{self.source}: {path}") from None
         self.spans.setdefault(placed_wall.id, []).append((along - width / 2, along + width / 2))
-        opening_id = self.opening_ids.new(raw_id or f"{kind[:-1]}_{index}")
+        opening_id = self.opening_ids.new(
+            raw_id or f"{kind[:-1]}_{index}", f"{path}.id" if raw_id else None
+        )
         top_limit = self.wall_height - _TOP_CLEARANCE
         top = y1
         if top_limit < top <= top_limit + _MAX_NOISE:
@@ -461,7 +484,7 @@ class _ProcthorImport(ImportState):
         if footprint is not None:
             height = 2 * uy if parent is None and uy > 0 else None
             src_size = (footprint[0], footprint[1], height) if height else None
-        object_id = self.object_ids.new(raw_id)
+        object_id = self.object_ids.new(raw_id, f"{node.path}.id")
         choice, warning = choose_asset(
             self.library,
             object_id=object_id,
@@ -548,8 +571,9 @@ class _ProcthorImport(ImportState):
         energy = min(max(node.num("intensity", 1.0), 0.0), 100.0)
         rgb_node = node.opt("rgb")
         color = _rgb(rgb_node) if rgb_node is not None else (1.0, 1.0, 1.0)
+        raw_id = node.str_("id", None)
         fields: dict[str, Any] = {
-            "id": self.light_ids.new(node.str_("id", None) or "light"),
+            "id": self.light_ids.new(raw_id or "light", f"{node.path}.id" if raw_id else None),
             "kind": kind,
             "position": position,
             "direction": tuple(round(d, 9) for d in direction),

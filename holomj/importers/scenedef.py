@@ -37,6 +37,11 @@ bottom. ``rotation`` is right-handed Euler angles in degrees about x, then y, th
 ``<id>`` (one placement) or ``<id>_<k>``. Object materials are not supported by holomj assets
 and are reported as warnings.
 
+Ids: two rooms, two openings (doors and windows together) or two objects with the same ``id``
+are an error naming both places. Ids the importer makes (``<id>_<k>``, a category for an object
+without an id) that clash with another id get a ``_2``... suffix; so does an id of the input
+that only clashes once sanitised, with a warning.
+
 A light: ``{"id", "type": "point" | "spot" | "directional", "position": [x, y, z],
 "direction": [x, y, z], "intensity", "color": [r, g, b]}``.
 """
@@ -44,13 +49,14 @@ A light: ``{"id", "type": "point" | "spot" | "directional", "position": [x, y, z
 from __future__ import annotations
 
 from collections import Counter
+from itertools import chain
 from pathlib import PurePath
 from typing import Any
 
 from holomj.errors import SpecError
 from holomj.importers.common import build_model, light_kind, snap_opening
 from holomj.importers.frames import normalise_deg, quat_from_euler_xyz
-from holomj.importers.ids import sanitise
+from holomj.importers.ids import listed_ids, sanitise
 from holomj.importers.jsonpath import Node
 from holomj.importers.result import ImportResult
 from holomj.importers.state import ImportState
@@ -76,6 +82,7 @@ class _SceneDefImport(ImportState):
         self.heights: list[float] = []
 
     def run(self) -> ImportResult:
+        self._check_ids()
         self._read_material_table()
         room_nodes = self._room_nodes()
         for index, node in enumerate(room_nodes):
@@ -98,6 +105,22 @@ class _SceneDefImport(ImportState):
             "source": self.source,
         }
         return self.result(fields, "scenedef")
+
+    def _check_ids(self) -> None:
+        """Reject ids used twice among the rooms, the openings (doors and windows share holomj's
+        namespace) or the objects, naming both places. Ids made from a placement number
+        (``<id>_<k>``) or a category are the importer's, not the input's, and are not checked."""
+        data = self.root.value
+        self.check_ids(
+            [
+                listed_ids(data.get("rooms"), "rooms"),
+                chain(
+                    listed_ids(data.get("doors"), "doors"),
+                    listed_ids(data.get("windows"), "windows"),
+                ),
+                listed_ids(data.get("objects"), "objects"),
+            ]
+        )
 
     # -- helpers ---------------------------------------------------------------------------
     def _list(self, key: str) -> list[Node]:
@@ -143,7 +166,8 @@ class _SceneDefImport(ImportState):
     def _room(self, node: Node, index: int) -> None:
         node.dict()
         path = node.path
-        room_id = self.room_ids.new(node.str_("id", None) or f"room_{index}")
+        raw_id = node.str_("id", None)
+        room_id = self.room_ids.new(raw_id or f"room_{index}", f"{path}.id" if raw_id else None)
         floor = node.opt("floor")
         if floor is not None:
             points = [p.vector(2, limit=1e4) for p in floor.items()]
@@ -217,8 +241,9 @@ class _SceneDefImport(ImportState):
             position, _, _ = snap_opening(walls, rooms, (x, y), width)
         except SpecError as err:
             raise err.located(f"{self.source}: {path}") from None
+        raw_id = node.str_("id", None)
         fields: dict[str, Any] = {
-            "id": self.opening_ids.new(node.str_("id", None) or kind[:-1]),
+            "id": self.opening_ids.new(raw_id or kind[:-1], f"{path}.id" if raw_id else None),
             "rooms": rooms,
             "position": position,
             "width": width,
@@ -249,7 +274,8 @@ class _SceneDefImport(ImportState):
         for index, node in enumerate(self._list("objects")):
             node.dict()
             category = node.str_("category", "")
-            raw_id = node.str_("id", None) or (sanitise(category, "object") if category else None)
+            given_id = node.str_("id", None)
+            raw_id = given_id or (sanitise(category, "object") if category else None)
             asset = node.str_("asset", None) or node.str_("asset_id", "")
             if not category and not asset:
                 raise node.error("an object needs a 'category' or an 'asset'")
@@ -263,8 +289,12 @@ class _SceneDefImport(ImportState):
             if not placements:
                 raise node.get("placements").error("expected at least one placement")
             for k, placement in enumerate(placements):
-                name = raw_id if len(placements) == 1 else f"{raw_id or 'object'}_{k}"
-                obj, top = self._placement(placement, node, name, category, asset, base_size, index)
+                single = len(placements) == 1
+                name = raw_id if single else f"{raw_id or 'object'}_{k}"
+                where = f"{node.path}.id" if single and given_id else None
+                obj, top = self._placement(
+                    placement, node, name, where, category, asset, base_size, index
+                )
                 if placement.has("on"):
                     pending_support.append((len(objects), placement.get("on")))
                 objects.append(obj)
@@ -283,6 +313,7 @@ class _SceneDefImport(ImportState):
         node: Node,
         obj: Node,
         name: str | None,
+        where: str | None,
         category: str,
         asset: str,
         base_size: tuple[float, ...] | None,
@@ -303,7 +334,7 @@ class _SceneDefImport(ImportState):
         size = None
         if base_size is not None:
             size = tuple(b * s for b, s in zip(base_size, scale3, strict=True))
-        object_id = self.object_ids.new(name or f"object_{index}")
+        object_id = self.object_ids.new(name or f"object_{index}", where)
         choice, warning = choose_asset(
             self.library,
             object_id=object_id,
@@ -353,8 +384,9 @@ class _SceneDefImport(ImportState):
     def _light(self, node: Node) -> Light:
         node.dict()
         kind = light_kind(node)
+        raw_id = node.str_("id", None)
         fields: dict[str, Any] = {
-            "id": self.light_ids.new(node.str_("id", None) or "light"),
+            "id": self.light_ids.new(raw_id or "light", f"{node.path}.id" if raw_id else None),
             "kind": kind,
             "energy": min(max(node.num("intensity", 1.0), 0.0), 100.0),
         }

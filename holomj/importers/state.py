@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Any
 
 from holomj.errors import SpecError
 from holomj.importers.common import finish_scene
-from holomj.importers.ids import IdMap
+from holomj.importers.ids import IdMap, check_unique_ids
 from holomj.importers.jsonpath import Node
 from holomj.importers.materials import MaterialResolver
 from holomj.importers.result import ImportResult, Substitution
@@ -38,12 +39,23 @@ class ImportState:
         except SpecError as err:
             raise err.located(f"{self.source}: rooms") from None
 
+    def check_ids(self, namespaces: Iterable[Iterable[tuple[str, str]]]) -> None:
+        """Reject an id used twice in one namespace (each an iterable of ``(id, JSON path)``
+        in document order), naming both places; see :func:`check_unique_ids`."""
+        for entries in namespaces:
+            check_unique_ids(entries, self.source)
+
     def result(self, fields: dict[str, Any], fmt: str) -> ImportResult:
         """Validate the scene built from ``fields`` and wrap it with this import's report."""
         scene = finish_scene(fields, self.library, self.source)
+        renamed = [
+            warning
+            for ids in (self.room_ids, self.opening_ids, self.object_ids, self.light_ids)
+            for warning in ids.renamed
+        ]
         return ImportResult(
             scene=scene,
             format=fmt,
             substitutions=self.substitutions,
-            warnings=self.materials.warnings + self.warnings,
+            warnings=self.materials.warnings + self.warnings + renamed,
         )

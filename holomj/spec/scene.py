@@ -181,11 +181,13 @@ class SceneSpec(FrozenModel):
 
     @model_validator(mode="after")
     def _check_consistency(self) -> SceneSpec:
-        _check_unique("rooms", [r.id for r in self.rooms])
-        _check_unique("objects", [o.id for o in self.objects])
-        _check_unique("openings", [d.id for d in self.doors] + [w.id for w in self.windows])
-        _check_unique("lights", [li.id for li in self.lights])
-        _check_unique("cameras", [c.id for c in self.cameras])
+        _check_unique(("rooms", [r.id for r in self.rooms]))
+        _check_unique(("objects", [o.id for o in self.objects]))
+        _check_unique(
+            ("doors", [d.id for d in self.doors]), ("windows", [w.id for w in self.windows])
+        )
+        _check_unique(("lights", [li.id for li in self.lights]))
+        _check_unique(("cameras", [c.id for c in self.cameras]))
         _check_materials(self)
         _check_rooms(self.rooms)
         _check_openings(self)
@@ -205,12 +207,16 @@ class SceneSpec(FrozenModel):
         raise SpecError(f"no room with id {room_id!r}", where="rooms")
 
 
-def _check_unique(kind: str, ids: list[str]) -> None:
-    seen: set[str] = set()
-    for index, item in enumerate(ids):
-        if item in seen:
-            raise SpecError(f"duplicate id {item!r}", where=f"{kind}[{index}].id")
-        seen.add(item)
+def _check_unique(*lists: tuple[str, list[str]]) -> None:
+    """Reject an id used twice across ``lists`` (``(field, ids)`` pairs sharing one namespace),
+    naming both places: ``windows[0].id: duplicate id 'x' (also doors[2].id)``."""
+    first: dict[str, str] = {}
+    for field, ids in lists:
+        for index, item in enumerate(ids):
+            where = f"{field}[{index}].id"
+            if item in first:
+                raise SpecError(f"duplicate id {item!r} (also {first[item]})", where=where)
+            first[item] = where
 
 
 def _check_materials(scene: SceneSpec) -> None:

@@ -7,10 +7,11 @@ import copy
 import json
 import math
 
-from hypothesis import HealthCheck, given, settings
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from holomj.errors import HolomjError
+from holomj.errors import HolomjError, SpecError
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.spec.base import parse_json, validate_model
@@ -121,6 +122,37 @@ def test_arbitrary_text_parses_or_fails_cleanly(text) -> None:
 def test_random_room_polygons_validate_or_fail_cleanly(points, empty_library: AssetLibrary) -> None:
     data = {"rooms": [{"id": "r", "polygon": points}]}
     _check(data, empty_library)
+
+
+# Namespaces of ids with at least two entries in BASE (doors and windows share one).
+ID_NAMESPACES = [
+    keys
+    for keys in [("rooms",), ("objects",), ("doors", "windows"), ("lights",), ("cameras",)]
+    if sum(len(BASE.get(key, [])) for key in keys) >= 2
+]
+ID_TEXT = st.from_regex(r"[A-Za-z0-9_][A-Za-z0-9_.:|+-]{0,20}", fullmatch=True)
+
+
+@settings(max_examples=150, deadline=None)
+@given(data=st.data())
+def test_duplicated_ids_name_both_places(data) -> None:
+    """Two entries of one namespace (doors and windows share one) given the same id are
+    rejected at the later one, naming the earlier one, whatever the id's text."""
+    scene = copy.deepcopy(BASE)
+    keys = data.draw(st.sampled_from(ID_NAMESPACES))
+    entries = [(f"{key}[{i}]", item) for key in keys for i, item in enumerate(scene.get(key, []))]
+    later = data.draw(st.integers(min_value=1, max_value=len(entries) - 1))
+    earlier = data.draw(st.integers(min_value=0, max_value=later - 1))
+    raw = data.draw(st.one_of(st.just(entries[earlier][1]["id"]), ID_TEXT))
+    others = {item["id"] for k, (_, item) in enumerate(entries) if k not in (earlier, later)}
+    assume(raw not in others)
+    entries[earlier][1]["id"] = raw
+    entries[later][1]["id"] = raw
+    with pytest.raises(SpecError) as info:
+        validate_model(SceneSpec, scene, "scene.json")
+    assert str(info.value) == (
+        f"scene.json: {entries[later][0]}.id: duplicate id {raw!r} (also {entries[earlier][0]}.id)"
+    )
 
 
 def test_fuzz_base_is_valid() -> None:

@@ -1,7 +1,7 @@
 """``holomj validate``: penetration audit, settle, stability report (and ``--repair``).
 
 Exit codes: 0 when the report was made (ok or not); with ``--strict``, 1 when it is not ok;
-2 for bad input.
+with ``--repair``, 1 when an object could not be saved; 2 for bad input.
 """
 
 from __future__ import annotations
@@ -40,8 +40,9 @@ def validate_command(
         bool,
         typer.Option(
             "--repair",
-            help="Resolve small initial penetrations, settle and bake the settled poses back "
-            "into the folder (scene.json, scene.xml with a 'settled' keyframe).",
+            help="Resolve small initial penetrations, settle and bake the settled poses of the "
+            "objects that end stable back into the folder (scene.json, scene.xml with a "
+            "'settled' keyframe); exits 1 when an object could not be saved.",
         ),
     ] = False,
     furniture: Annotated[
@@ -101,6 +102,9 @@ def validate_command(
         err_console.print(f"{status}: {_headline(report)}; report -> {json_out}")
     if strict and not report.ok:
         raise typer.Exit(code=1)
+    if repair and report.unsaved:
+        # Some objects could not be saved: the folder holds what could be, but the repair failed.
+        raise typer.Exit(code=1)
 
 
 def _bad_furniture(value: str) -> None:
@@ -148,7 +152,8 @@ def write_report(report: StabilityReport, path: Path) -> None:
 def _headline(report: StabilityReport) -> str:
     c = report.counts
     return (
-        f"{c.get('stable', 0)}/{c.get('objects', 0)} objects stable, "
+        f"{c.get('stable', 0)}/{c.get('objects', 0)} objects stable "
+        f"({c.get('dynamic', 0)} simulated free, {c.get('static', 0)} static), "
         f"{c.get('penetrations', 0)} penetrations at t = 0, "
         f"{sum(report.warnings.values())} MuJoCo warnings"
     )
@@ -157,10 +162,14 @@ def _headline(report: StabilityReport) -> str:
 def print_summary(report: StabilityReport) -> None:
     """A table of the objects (unstable first) and a verdict."""
     table = Table(title=f"stability of {report.source}")
-    table.add_column("object")
+    longest = max((len(o.name) for o in report.objects), default=6)
+    table.add_column("object", min_width=min(longest, 32), overflow="fold")
     table.add_column("stable")
+    table.add_column("free")
+    table.add_column("moved mm", justify="right")
+    table.add_column("turned °", justify="right")
     table.add_column("drift mm", justify="right")
-    table.add_column("rot °", justify="right")
+    table.add_column("pen. mm", justify="right")
     table.add_column("support")
     table.add_column("reasons")
     rows = sorted(report.objects, key=lambda o: (o.stable, o.name))
@@ -168,8 +177,11 @@ def print_summary(report: StabilityReport) -> None:
         table.add_row(
             obj.name,
             "[green]yes[/]" if obj.stable else "[red]no[/]",
+            "yes" if obj.dynamic else "static",
+            f"{obj.displacement_m * 1000:.1f}",
+            f"{obj.rotation_from_authored_deg:.1f}",
             f"{obj.drift_m * 1000:.2f}",
-            f"{obj.rotation_deg:.2f}",
+            f"{obj.penetration_m * 1000:.1f}",
             obj.support or "-",
             "; ".join(obj.reasons),
         )
@@ -202,7 +214,7 @@ def print_summary(report: StabilityReport) -> None:
         out_console.print(f"  [red]MuJoCo warnings:[/] {report.warnings}")
     verdict = "[bold green]ok[/]" if report.ok else "[bold red]not ok[/]"
     out_console.print(
-        f"{verdict}: {_headline(report)}; max penetration while monitoring "
+        f"{verdict}: {_headline(report)}; max penetration at t = 0 "
         f"{report.max_penetration_m * 1000:.2f} mm; {report.sim_time_s:.1f} s simulated in "
         f"{report.wall_time_s:.1f} s ({report.realtime_factor:.1f}x real time)"
     )

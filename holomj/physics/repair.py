@@ -6,12 +6,14 @@
    listed later in the scene; structure and the floor never move. Repeat until no pair is
    deeper than the tolerance. Deeper pairs are left alone and reported as unsaved.
 2. **Settle** the separated scene (furniture free, as validation does).
-3. **Bake**: every free object that ends stable gets its settled pose in ``scene.json``
-   (``yaw_deg``, or ``quat`` when it tilts more than 1°); unstable ones and those too deep to
-   separate keep their pose and are reported as unsaved. No object is ever deleted.
+3. **Bake**: every free object that ends stable (``STABILITY_RULE``: at rest, and close to
+   the pose it had after separation) gets its settled pose in ``scene.json`` (``yaw_deg``, or
+   ``quat`` when it tilts more than 1°); unstable ones and those too deep to separate keep
+   their pose and are reported as unsaved. No object is ever deleted, and no pose that fails
+   the rule (a toppled lamp, a box that slid away) is ever written as settled.
 4. **Re-export** the folder atomically from the new scene, with a keyframe ``settled`` in
-   ``scene.xml`` holding the joint positions the simulation settled to (all of them, unsaved
-   objects included: it is the state the physics reached); other files in the folder
+   ``scene.xml`` holding the joint positions the simulation settled to, except those of the
+   unsaved objects, which keep their authored pose there too; other files in the folder
    (reports, renders) are carried over.
 """
 
@@ -87,7 +89,8 @@ def repair_folder(
         if o.name in unstable and o.name not in {u.name for u in unsaved}
     ]
     final = attach_saved_robot(compile_scene(baked, loaded.library), loaded.folder)
-    add_settled_key(final, compiled.model, validation.result.data)
+    unsaved_names = {u.name for u in unsaved}
+    add_settled_key(final, compiled.model, validation.result.data, skip=unsaved_names)
     write_folder(final, loaded.folder)
     repaired = moves(original, baked, why)
     return RepairOutcome(loaded.folder, baked, repaired, sorted(unsaved, key=lambda u: u.name))
@@ -246,12 +249,22 @@ def _rebuilt(scene: SceneSpec, objects: list[SceneObject]) -> SceneSpec:
     return SceneSpec.model_validate({**scene.model_dump(), "objects": objects})
 
 
-def add_settled_key(compiled: CompiledScene, settled: mujoco.MjModel, data: mujoco.MjData) -> None:
-    """Add the keyframe ``settled`` to ``compiled`` (joints matched by name) and recompile."""
+def add_settled_key(
+    compiled: CompiledScene,
+    settled: mujoco.MjModel,
+    data: mujoco.MjData,
+    skip: set[str] | frozenset[str] = frozenset(),
+) -> None:
+    """Add the keyframe ``settled`` to ``compiled`` (joints matched by name) and recompile.
+
+    The joints of the objects in ``skip`` (unsaved objects) keep their authored position."""
     model = compiled.model
     qpos = model.qpos0.copy()
+    skipped_prefixes = tuple(f"{name}/" for name in skip)
     for joint in range(model.njnt):
         name = model.joint(joint).name
+        if skipped_prefixes and name.startswith(skipped_prefixes):
+            continue
         try:
             source = settled.joint(name)
         except KeyError:

@@ -8,6 +8,12 @@ window of ``monitor_s``, over which each object's drift, rotation, path length (
 deepest contact are measured; at the end, what it rests on. MuJoCo is deterministic on one
 thread, so the same scene always gives the same numbers.
 
+Objects are judged by the one rule of :data:`holomj.spec.report.STABILITY_RULE`: at rest over
+the monitor window, close to the pose they were authored at, and without penetration at t = 0.
+Positions are those of each object body's centre of mass (``xipos``), so the verdict does not
+depend on where the body frame sits (a footed pole that topples ends 90° from its authored pose
+with its centre of mass half its height lower, although its frame may not have moved).
+
 MuJoCo 3.17's sleeping islands (``mjENBL_SLEEP``) are off by default: a sleeping body cannot
 drift, so creep slower than ``sleep_tolerance`` would go unseen, and the scene's own options
 are the ones its users simulate with. ``sleep=True`` turns them on for big scenes: 780 objects
@@ -76,10 +82,11 @@ class SettleResult:
     """The raw outcome of settle + monitor, before judging."""
 
     data: mujoco.MjData
-    start_pos: np.ndarray  # object body positions at t = 0
-    monitor_pos: np.ndarray  # at the start of the monitor window
+    start_pos: np.ndarray  # object centres of mass at t = 0 (the authored pose)
+    start_quat: np.ndarray  # object body orientations at t = 0
+    monitor_pos: np.ndarray  # centres of mass at the start of the monitor window
     monitor_quat: np.ndarray
-    path: np.ndarray  # path length over the monitor window
+    path: np.ndarray  # path length of the centre of mass over the monitor window
     penetration: np.ndarray  # deepest contact during the monitor window (>= 0)
     settle_time: float
     settled: bool
@@ -139,7 +146,8 @@ def _run_settle(model: mujoco.MjModel, track: ObjectTrack, th: Thresholds) -> Se
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     bodies = track.owners.object_bodies
-    start_pos = data.xpos[bodies].copy()
+    start_pos = data.xipos[bodies].copy()
+    start_quat = data.xquat[bodies].copy()
     dt = model.opt.timestep
     cap_steps = round(th.settle_cap_s / dt)
     window_steps = max(1, round(th.rest_window_s / dt))
@@ -160,20 +168,21 @@ def _run_settle(model: mujoco.MjModel, track: ObjectTrack, th: Thresholds) -> Se
 
     geom_owner = track.owners.geom_owner
     n = len(bodies)
-    monitor_pos = data.xpos[bodies].copy()
+    monitor_pos = data.xipos[bodies].copy()
     monitor_quat = data.xquat[bodies].copy()
     previous = monitor_pos.copy()
     path = np.zeros(n)
     deepest = np.zeros(n)
     for _ in range(round(th.monitor_s / dt)):
         mujoco.mj_step(model, data)
-        current = data.xpos[bodies]
+        current = data.xipos[bodies]
         path += np.linalg.norm(current - previous, axis=1)
         previous = current.copy()
         _deepest_contacts(data, geom_owner, deepest)
     return SettleResult(
         data=data,
         start_pos=start_pos,
+        start_quat=start_quat,
         monitor_pos=monitor_pos,
         monitor_quat=monitor_quat,
         path=path,
@@ -221,20 +230,60 @@ def quat_angle_deg(q1: np.ndarray, q2: np.ndarray) -> np.ndarray:
     return np.degrees(2.0 * np.arccos(dot))
 
 
+def displacement_from_authored(
+    start: np.ndarray, end: np.ndarray, settle_drop: float
+) -> np.ndarray:
+    """Distance of each final centre of mass from its authored one, after the allowed settle:
+    up to ``settle_drop`` of sinking is forgiven (a dropped object falling onto its support)."""
+    delta = end - start
+    sink = np.minimum(delta[:, 2], 0.0)
+    delta[:, 2] = np.where(delta[:, 2] < 0.0, np.minimum(sink + settle_drop, 0.0), delta[:, 2])
+    return np.linalg.norm(delta, axis=1)
+
+
+def object_penetrations(owners: GeomOwners, found: AuditResult) -> np.ndarray:
+    """Each object's own deepest interpenetrating pair at t = 0 (0 when it has none)."""
+    deepest = np.zeros(len(owners.names))
+    for overlap in found.overlaps:
+        for geom in (overlap.geom1, overlap.geom2):
+            owner = int(owners.geom_owner[geom])
+            if owner >= 0:
+                deepest[owner] = max(deepest[owner], overlap.depth)
+    return deepest
+
+
+def _penetration_partners(owners: GeomOwners, found: AuditResult) -> dict[str, tuple[str, float]]:
+    """Per object name: the other party of its deepest pair at t = 0, and the depth."""
+    partners: dict[str, tuple[str, float]] = {}
+    for pair in found.penetrations:  # deepest first
+        for me, other in ((pair.a, pair.b), (pair.b, pair.a)):
+            if me in owners.names and me not in partners:
+                partners[me] = (other, pair.depth_m)
+    return partners
+
+
 def judge(
     loaded: LoadedScene,
     track: ObjectTrack,
     result: SettleResult,
     th: Thresholds,
+    found: AuditResult,
 ) -> list[ObjectReport]:
-    """Turn the raw numbers into one :class:`ObjectReport` per object."""
+    """Turn the raw numbers into one :class:`ObjectReport` per object (``STABILITY_RULE``)."""
     model, data = loaded.model, result.data
     owners = track.owners
     bodies = owners.object_bodies
-    end_pos = data.xpos[bodies]
+    end_pos = data.xipos[bodies]
+    end_quat = data.xquat[bodies]
     drift = np.linalg.norm(end_pos - result.monitor_pos, axis=1)
-    rotation = quat_angle_deg(data.xquat[bodies], result.monitor_quat)
+    rotation = quat_angle_deg(end_quat, result.monitor_quat)
+    displacement = displacement_from_authored(result.start_pos, end_pos, th.settle_drop_m)
+    turned = quat_angle_deg(end_quat, result.start_quat)
     drop = result.start_pos[:, 2] - end_pos[:, 2]
+    penetration = object_penetrations(owners, found)
+    partners = _penetration_partners(owners, found)
+    below_floor_at_start = {d.name for d in found.below_floor}
+    outside_at_start = {d.name for d in found.outside_rooms}
     lowest = lowest_points(model, data, owners)
     supports = final_supports(model, data, owners)
     at_rest = np.ones(len(bodies), dtype=bool)
@@ -255,14 +304,28 @@ def judge(
         fell = bool(drop[i] > th.fall_m or lowest[i] < -th.below_floor_m)
         left_room = bool(rooms is not None and not inside[name])
         reasons = []
+        # (a) at rest over the monitor window
         if drift[i] >= th.drift_m:
             reasons.append(f"drifted {drift[i] * 1000:.1f} mm during the monitor window")
         if rotation[i] >= th.rotation_deg:
             reasons.append(f"turned {rotation[i]:.1f}° during the monitor window")
+        # (b) close to the authored pose
+        if displacement[i] >= th.displacement_m:
+            reasons.append(f"ended {displacement[i] * 1000:.1f} mm from its authored position")
+        if turned[i] >= th.rotation_from_authored_deg:
+            reasons.append(f"ended {turned[i]:.1f}° from its authored orientation")
         if fell:
             reasons.append(
                 f"fell {drop[i]:.3f} m" if drop[i] > th.fall_m else "fell through the floor"
             )
+        # (c) no penetration at t = 0, in its place, on its support
+        if penetration[i] > th.tolerance_m:
+            other, depth = partners.get(name, ("something", float(penetration[i])))
+            reasons.append(f"penetrates {other} by {depth * 1000:.1f} mm at t = 0")
+        if name in below_floor_at_start:
+            reasons.append("below the floor at t = 0")
+        if name in outside_at_start:
+            reasons.append("outside every room at t = 0")
         if left_room:
             room = spec.room if spec is not None and spec.room else None
             reasons.append(f"left room {room}" if room else "ended outside every room")
@@ -275,6 +338,8 @@ def judge(
                 name=name,
                 stable=not reasons,
                 dynamic=dynamic,
+                displacement_m=_r(displacement[i]),
+                rotation_from_authored_deg=_r(turned[i], 4),
                 drift_m=_r(drift[i]),
                 rotation_deg=_r(rotation[i], 4),
                 path_m=_r(result.path[i]),
@@ -283,7 +348,8 @@ def judge(
                 left_room=left_room,
                 support=support,
                 expected_support=expected,
-                penetration_m=_r(result.penetration[i]),
+                penetration_m=_r(penetration[i]),
+                contact_depth_m=_r(result.penetration[i]),
                 at_rest=bool(at_rest[i]),
                 reasons=reasons,
             )
@@ -328,7 +394,7 @@ def run_validation(
     found = audit(loaded, tolerance=th.tolerance_m, room_margin=th.room_margin_m)
     track = ObjectTrack.of(loaded.model, loaded.objects)
     result = run_settle(loaded.model, track, th, sleep)
-    objects = judge(loaded, track, result, th)
+    objects = judge(loaded, track, result, th, found)
     wall = time.perf_counter() - started
     return Validation(assemble(loaded, found, result, objects, th, furniture, wall), track, result)
 
@@ -349,6 +415,12 @@ def assemble(
         "dynamic": sum(o.dynamic for o in objects),
         "stable": len(objects) - len(unstable),
         "unstable": len(unstable),
+        "static": sum(not o.dynamic for o in objects),
+        "moved_from_authored": sum(
+            o.displacement_m >= th.displacement_m
+            or o.rotation_from_authored_deg >= th.rotation_from_authored_deg
+            for o in objects
+        ),
         "fell": sum(o.fell for o in objects),
         "left_room": sum(o.left_room for o in objects),
         "wrong_support": sum(
@@ -365,10 +437,16 @@ def assemble(
         source=str(loaded.source),
         furniture=furniture,
         objects=objects,
+        static_objects=[o.name for o in objects if not o.dynamic],
         penetrations=found.penetrations,
         below_floor=found.below_floor,
         outside_rooms=found.outside_rooms,
-        max_penetration_m=_r(max((o.penetration_m for o in objects), default=0.0)),
+        max_penetration_m=_r(
+            max([o.penetration_m for o in objects] + [p.depth_m for p in found.penetrations])
+            if objects or found.penetrations
+            else 0.0
+        ),
+        max_contact_depth_m=_r(max((o.contact_depth_m for o in objects), default=0.0)),
         warnings=result.warnings,
         counts=counts,
         sim_time_s=_r(result.sim_time, 4),

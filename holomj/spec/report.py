@@ -2,6 +2,20 @@
 
 Units: metres, degrees, seconds. Every object of the scene appears in ``objects`` with its
 numbers, stable or not; ``reasons`` says in words why an object is not stable.
+
+**Stable**, one definition (``STABILITY_RULE``): an object is stable when
+
+(a) it is at rest at the end: its centre of mass moves less than ``drift_m`` and it turns less
+    than ``rotation_deg`` over the monitor window;
+(b) its final pose is within ``displacement_m`` and ``rotation_from_authored_deg`` of the pose
+    it was authored at (t = 0), after the allowed settle: the centre of mass may first sink up to
+    ``settle_drop_m`` (a dropped object falling onto its support);
+(c) it is in no penetration deeper than ``tolerance_m`` at t = 0 (its own deepest pair), does
+    not end below the floor or outside its room, rests on the support the scene names, and the
+    simulation raised no MuJoCo warning.
+
+Positions are those of the centre of mass and rotations those of the body, so the rule is the
+same whatever the body frame (centre or foot): a footed pole that topples has turned 90°.
 """
 
 from __future__ import annotations
@@ -12,7 +26,15 @@ from pydantic import Field
 
 from holomj.spec.base import FrozenModel, Vec3
 
-REPORT_SCHEMA_VERSION = "1.0"
+REPORT_SCHEMA_VERSION = "2.0"
+
+STABILITY_RULE = (
+    "stable = (a) at rest: centre of mass moves < drift_m and body turns < rotation_deg over the "
+    "monitor window; (b) final pose within displacement_m and rotation_from_authored_deg of the "
+    "authored pose at t = 0 (the centre of mass may first sink up to settle_drop_m onto its "
+    "support); (c) no penetration deeper than tolerance_m at t = 0, not below the floor, not "
+    "outside its room, on its intended support, no MuJoCo warning. Whatever the body frame."
+)
 
 NonNegative = Annotated[float, Field(ge=0.0)]
 
@@ -23,9 +45,25 @@ class Thresholds(FrozenModel):
     tolerance_m: NonNegative = Field(
         default=0.001, description="Penetration at t = 0 deeper than this is a defect."
     )
-    drift_m: NonNegative = Field(default=0.01, description="Stable: moves less over monitor.")
-    rotation_deg: NonNegative = Field(default=5.0, description="Stable: turns less over monitor.")
-    fall_m: NonNegative = Field(default=0.05, description="Fell: ends this much below t = 0.")
+    drift_m: NonNegative = Field(
+        default=0.01, description="(a) At rest: the centre of mass moves less over the monitor."
+    )
+    rotation_deg: NonNegative = Field(
+        default=5.0, description="(a) At rest: the body turns less over the monitor window."
+    )
+    displacement_m: NonNegative = Field(
+        default=0.02, description="(b) The final centre of mass lies closer to the authored one."
+    )
+    rotation_from_authored_deg: NonNegative = Field(
+        default=5.0, description="(b) The final orientation is closer to the authored one."
+    )
+    settle_drop_m: NonNegative = Field(
+        default=0.01,
+        description="(b) The centre of mass may sink this much before displacement counts.",
+    )
+    fall_m: NonNegative = Field(
+        default=0.05, description="Fell: the centre of mass ends this much below t = 0."
+    )
     below_floor_m: NonNegative = Field(
         default=0.01, description="Fell through: lowest collider point below -this at the end."
     )
@@ -45,15 +83,27 @@ class Thresholds(FrozenModel):
 
 
 class ObjectReport(FrozenModel):
-    """One object: how it behaved over the monitor window and why it is not stable."""
+    """One object: how it moved from its authored pose, how it behaved over the monitor window,
+    and why it is not stable (see ``STABILITY_RULE``)."""
 
     name: str
     stable: bool
-    dynamic: bool = Field(description="Has a free joint in the validated model.")
-    drift_m: NonNegative = Field(description="Distance moved over the monitor window.")
-    rotation_deg: NonNegative = Field(description="Rotation over the monitor window.")
+    dynamic: bool = Field(description="Simulated free (a free joint in the validated model).")
+    displacement_m: NonNegative = Field(
+        description="(b) Distance of the final centre of mass from the authored one, after the "
+        "allowed settle drop."
+    )
+    rotation_from_authored_deg: NonNegative = Field(
+        description="(b) Angle between the final and the authored orientation."
+    )
+    drift_m: NonNegative = Field(
+        description="(a) Distance the centre of mass moved over the monitor window."
+    )
+    rotation_deg: NonNegative = Field(description="(a) Rotation over the monitor window.")
     path_m: NonNegative = Field(description="Path length over the monitor window (jitter).")
-    drop_m: float = Field(description="Height lost from t = 0 to the end (negative: rose).")
+    drop_m: float = Field(
+        description="Height the centre of mass lost from t = 0 to the end (negative: rose)."
+    )
     fell: bool
     left_room: bool
     support: str | None = Field(
@@ -63,7 +113,13 @@ class ObjectReport(FrozenModel):
     expected_support: str | None = Field(
         description="The scene's support ('floor' when none); None: anything will do."
     )
-    penetration_m: NonNegative = Field(description="Deepest contact during the monitor window.")
+    penetration_m: NonNegative = Field(
+        description="(c) Depth of this object's deepest interpenetrating pair at t = 0 (the "
+        "audit's, the same number as in ``penetrations``)."
+    )
+    contact_depth_m: NonNegative = Field(
+        default=0.0, description="Deepest contact during the monitor window (solver softness)."
+    )
     at_rest: bool
     reasons: list[str] = Field(default_factory=list)
 
@@ -107,18 +163,32 @@ class Unsaved(FrozenModel):
 class StabilityReport(FrozenModel):
     """Everything ``holomj validate`` found about a scene."""
 
-    schema_version: Literal["1.0"] = REPORT_SCHEMA_VERSION
+    schema_version: Literal["2.0"] = REPORT_SCHEMA_VERSION
     ok: bool = Field(
-        description="Every object stable, no penetration, object below the floor or outside "
-        "the rooms at t = 0, and no MuJoCo warning."
+        description="Every object stable (see stability_rule), no penetration, object below the "
+        "floor or outside the rooms at t = 0, and no MuJoCo warning."
     )
+    stability_rule: str = STABILITY_RULE
     source: str
-    furniture: str = "free"
+    furniture: str = Field(
+        default="free",
+        description="free: furniture simulated free; static: furniture fixed; as-is: the "
+        "scene's own flags (holomj generate: free but for bolted-down fixtures).",
+    )
     objects: list[ObjectReport]
+    static_objects: list[str] = Field(
+        default_factory=list,
+        description="Objects simulated fixed (no free joint): not put to the stability test.",
+    )
     penetrations: list[PenetrationPair] = Field(default_factory=list)
     below_floor: list[ObjectDefect] = Field(default_factory=list)
     outside_rooms: list[ObjectDefect] = Field(default_factory=list)
     max_penetration_m: NonNegative = Field(
+        default=0.0,
+        description="Deepest interpenetrating pair at t = 0 (the largest of the objects' "
+        "penetration_m and of penetrations[].depth_m).",
+    )
+    max_contact_depth_m: NonNegative = Field(
         default=0.0, description="Deepest contact of any object during the monitor window."
     )
     warnings: dict[str, int] = Field(default_factory=dict)

@@ -106,3 +106,42 @@ def test_real_subprocess(falling_folder: Path, tmp_path: Path) -> None:
     assert "NOT ok" in result.stderr
     report = json.loads(report_path.read_text())
     assert report["counts"]["fell"] == 1 and not report["ok"]
+
+
+def test_repair_never_bakes_a_toppled_pose(
+    runner: CliRunner, empty_library: AssetLibrary, tmp_path: Path
+) -> None:
+    """A footed pole that topples is unsaved: its authored pose stays in scene.json and in the
+    'settled' keyframe, the crate beside it is baked, and --repair exits 1."""
+    import math
+
+    import mujoco
+
+    tilt = math.radians(10) / 2
+    scene = make_scene(
+        [
+            box("crate", (1.5, 1.5, 0), (0.4, 0.4, 0.4)),
+            box(
+                "pole",
+                (3, 3, 0.02 * math.sin(2 * tilt)),
+                (0.04, 0.04, 1.0),
+                quat=[math.cos(tilt), 0.0, math.sin(tilt), 0.0],
+            ),
+        ]
+    )
+    folder = export(scene, empty_library, tmp_path / "pole")
+    authored = json.loads((folder / "scene.json").read_text())["objects"][1]
+    result = runner.invoke(app, ["validate", str(folder), "--repair", "--json", "-", *FAST])
+    assert result.exit_code == 1, result.output
+    report = json.loads(result.stdout)
+    assert [u["name"] for u in report["unsaved"]] == ["pole"]
+    assert "from its authored orientation" in report["unsaved"][0]["why"]
+    kept = json.loads((folder / "scene.json").read_text())["objects"][1]
+    assert kept["position"] == authored["position"] and kept["quat"] == authored["quat"]
+    model = mujoco.MjModel.from_xml_path(str(folder / "scene.xml"))
+    key = model.key("settled")
+    joint = model.joint("pole/freejoint")
+    adr = joint.qposadr[0]
+    assert key.qpos[adr : adr + 7] == pytest.approx(model.qpos0[adr : adr + 7])
+    row = {o["name"]: o for o in report["objects"]}["pole"]
+    assert not row["stable"] and row["rotation_from_authored_deg"] > 45

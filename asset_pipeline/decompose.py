@@ -18,6 +18,10 @@ tried only when the one before failed:
 
 Preprocessing follows the mesh: ``off`` for watertight meshes with consistent winding (CoACD
 may then cut the mesh as it is), ``on`` (manifold remeshing) otherwise.
+
+A result of step 2 or 3 is *degraded*: :attr:`Decomposition.degraded_reason` says why in one
+line (``"CoACD timed out after 60 s; single convex hull"``), so callers can warn about it and
+keep it out of caches (a timeout on a busy machine must not become permanent).
 """
 
 from __future__ import annotations
@@ -83,12 +87,22 @@ class CoacdParams:
 
 @dataclass(frozen=True)
 class Decomposition:
-    """Hull vertex sets (asset frame), the method that made them and every attempt."""
+    """Hull vertex sets (asset frame), the method that made them and every attempt.
+
+    ``degraded_reason`` is None when CoACD ran as asked (or was not needed), else one line
+    saying how it failed and what was used instead.
+    """
 
     hulls: list[np.ndarray]
     method: str
     preprocess_mode: str
     attempts: list[dict] = field(default_factory=list)
+    degraded_reason: str | None = None
+
+    @property
+    def degraded(self) -> bool:
+        """True when a fallback (coarser settings, single convex hull) replaced CoACD's result."""
+        return self.degraded_reason is not None
 
 
 MAX_BODY_HULLS = 32
@@ -115,11 +129,13 @@ def decompose(mesh: trimesh.Trimesh, params: CoacdParams, manifold: bool) -> Dec
         manifold = bool(sub.is_watertight and sub.is_winding_consistent)
         result = _chain(sub, params, manifold)
         attempt = {"method": "convex_bodies", "status": "ok", "bodies": len(convex)}
+        reason = result.degraded_reason
         return Decomposition(
             hulls + result.hulls,
             f"convex_bodies+{result.method}",
             result.preprocess_mode,
             [attempt, *result.attempts],
+            f"{reason} for the non-convex bodies" if reason else None,
         )
     return _chain(mesh, params, manifold)
 
@@ -178,7 +194,11 @@ def _chain(mesh: trimesh.Trimesh, params: CoacdParams, manifold: bool) -> Decomp
         attempts.append(record)
         if status == "ok":
             return Decomposition(
-                hulls=hulls, method=method, preprocess_mode=mode, attempts=attempts
+                hulls=hulls,
+                method=method,
+                preprocess_mode=mode,
+                attempts=attempts,
+                degraded_reason=degraded_reason(attempts, method),
             )
     start = time.perf_counter()
     hull = np.asarray(mesh.vertices, dtype=np.float64)  # hulls.py takes the hull (or a box)
@@ -186,8 +206,40 @@ def _chain(mesh: trimesh.Trimesh, params: CoacdParams, manifold: bool) -> Decomp
         {"method": "convex_hull", "status": "ok", "seconds": round(time.perf_counter() - start, 3)}
     )
     return Decomposition(
-        hulls=[hull], method="convex_hull", preprocess_mode=mode, attempts=attempts
+        hulls=[hull],
+        method="convex_hull",
+        preprocess_mode=mode,
+        attempts=attempts,
+        degraded_reason=degraded_reason(attempts, "convex_hull"),
     )
+
+
+FALLBACK_NAMES = {"coacd_coarse": "coarser CoACD settings", "convex_hull": "single convex hull"}
+
+
+def degraded_reason(attempts: list[dict], method: str) -> str | None:
+    """One line on why ``method`` replaced CoACD's result, or None if it did not.
+
+    Each distinct failure of the CoACD attempts, then what was used instead:
+    ``"CoACD timed out after 60 s; single convex hull"``.
+    """
+    if method not in FALLBACK_NAMES:
+        return None
+    failures: list[str] = []
+    for attempt in attempts:
+        phrase = _failure_phrase(attempt)
+        if phrase and phrase not in failures:
+            failures.append(phrase)
+    return "; ".join([*failures, FALLBACK_NAMES[method]])
+
+
+def _failure_phrase(attempt: dict) -> str | None:
+    """How one CoACD attempt failed, in a few words; None for a success or a skipped step."""
+    if attempt["status"] == "timeout":
+        return f"CoACD timed out after {attempt['params']['timeout_s']:g} s"
+    if attempt["status"] == "error":
+        return attempt.get("reason") or "CoACD failed"
+    return None
 
 
 def _run_child(
@@ -210,15 +262,23 @@ def _run_child(
         except subprocess.TimeoutExpired:
             return [], "timeout", f"CoACD did not finish within {params.timeout_s:g} s (killed)"
         if proc.returncode != 0 or not dst.is_file():
-            tail = proc.stderr.decode("utf-8", "replace").strip().splitlines()[-1:]
-            detail = f": {tail[0][:200]}" if tail else ""
-            return [], "error", f"CoACD exited with code {proc.returncode}{detail}"
+            return [], "error", _child_error(proc.returncode, proc.stderr)
         with np.load(dst) as data:
             hulls = [data[f"hull_{i}"] for i in range(int(data["count"]))]
     hulls = [h for h in hulls if len(h) >= 4]
     if not hulls:
         return [], "error", "CoACD returned no usable hull"
     return hulls, "ok", ""
+
+
+def _child_error(returncode: int, stderr: bytes) -> str:
+    """The reason of a failed child: CoACD missing (it could not be imported) or crashed."""
+    tail = stderr.decode("utf-8", "replace").strip().splitlines()[-1:]
+    last = tail[0][:200] if tail else ""
+    if last.startswith(("ModuleNotFoundError", "ImportError")):
+        return f"CoACD unavailable ({last})"
+    detail = f": {last}" if last else ""
+    return f"CoACD exited with code {returncode}{detail}"
 
 
 def _child(src: str, dst: str) -> None:

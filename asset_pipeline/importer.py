@@ -6,6 +6,10 @@ bottom) -> repair (weld, drop degenerate/duplicate faces, consistent winding) ->
 child process with a fallback chain -> hull post-processing (vertex cap, pull inside the
 visual, slivers to boxes) -> support surfaces -> metadata (category table, sidecar).
 
+The report's ``degraded`` / ``degraded_reason`` say whether CoACD's result was replaced by a
+fallback (coarser settings or the single convex hull) because CoACD was unavailable, crashed
+or timed out.
+
 The bundle holds ``visual_K.obj`` (one per material, with ``vt`` when textured),
 ``texture_K.png`` and ``hull_KK.obj``; no thumbnails. Its bytes are deterministic for the same
 input and options. The report is JSON-able and says what was done and how well.
@@ -169,6 +173,9 @@ def import_asset(
     meta, meta_warnings = annotate.build_meta(derived, sidecar, explicit, sidecar_where)
     lap("annotate")
 
+    warnings = loaded.warnings + mass_warnings + meta_warnings
+    if decomposition.degraded:
+        warnings.append(f"degraded decomposition: {decomposition.degraded_reason}")
     report = {
         "asset_id": asset_id,
         "source": {
@@ -183,6 +190,8 @@ def import_asset(
         "repairs": repaired.stats,
         "watertight": repaired.watertight,
         "winding_consistent": repaired.winding_consistent,
+        "degraded": decomposition.degraded,
+        "degraded_reason": decomposition.degraded_reason,
         "decomposition": {
             "method": decomposition.method,
             "preprocess_mode": decomposition.preprocess_mode,
@@ -190,7 +199,7 @@ def import_asset(
             "fallback_reason": "; ".join(
                 f"{a['method']}: {a['reason']}"
                 for a in decomposition.attempts
-                if a["status"] != "ok" and "reason" in a
+                if a["status"] not in ("ok", "skipped") and "reason" in a
             )
             or None,
         },
@@ -209,7 +218,7 @@ def import_asset(
         },
         "files": {name: len(data) for name, data in sorted(files.items())},
         "timings_s": timings,
-        "warnings": loaded.warnings + mass_warnings + meta_warnings,
+        "warnings": warnings,
     }
     return ImportedAsset(bundle=AssetBundle(meta=meta, files=files), report=report)
 

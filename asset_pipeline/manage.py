@@ -7,6 +7,13 @@ own source code, the import options and the bytes of the file and its companions
 option re-processes. Every finished asset is committed to the library index at once (see
 :func:`asset_pipeline.library_writer.add_assets`), so an import killed half-way keeps what it
 finished and a second run resumes from the cache.
+
+A *degraded* result (CoACD unavailable, crashed or timed out, so coarser settings or the single
+convex hull stood in; see :mod:`asset_pipeline.decompose`) is still added to the library, marked
+``degraded`` in its ``derivation.json``, but it is cached as final only when the caller accepts
+fallbacks (``accept_fallback``, ``--accept-fallback``). Otherwise it travels to the library
+through a pending folder (``LIB/.cache/pending/<key>-<nonce>/``, deleted once committed), and a
+degraded cache entry is not reused: the next import of the file tries CoACD again.
 """
 
 from __future__ import annotations
@@ -17,6 +24,8 @@ import hashlib
 import json
 import multiprocessing
 import re
+import secrets
+import shutil
 import time
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor, as_completed
@@ -37,6 +46,8 @@ COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg")
 _COLLISION_STEMS = re.compile(r"(_vhacd|_col|_collision|_coll)$", re.IGNORECASE)
 _GENERIC_STEMS = {"textured", "model", "mesh", "scene", "untitled", "object", "base"}
 CACHE_DIR = ".cache"
+PENDING_DIR = "pending"  # inside CACHE_DIR: degraded results on their way to the library
+PENDING_MAX_AGE_S = 3600.0  # older pending folders are debris of killed runs
 DERIVATION_FILE = "derivation.json"
 
 
@@ -89,6 +100,9 @@ class JobOutcome:
     hulls: int | None = None
     mass_kg: float | None = None
     cache_key: str | None = None
+    degraded: bool = False
+    degraded_reason: str | None = None
+    entry: str | None = None  # folder under the cache root holding the bundle to commit
 
 
 @dataclass
@@ -107,14 +121,27 @@ class ImportSummary:
         """Outcomes that did not."""
         return [o for o in self.outcomes if not o.ok]
 
+    @property
+    def degraded(self) -> list[JobOutcome]:
+        """Outcomes that added an asset from a fallback decomposition."""
+        return [o for o in self.outcomes if o.ok and o.degraded]
+
     def to_dict(self) -> dict[str, Any]:
         """JSON-able form."""
         return {
             "succeeded": len(self.succeeded),
             "failed": len(self.failed),
+            "degraded": len(self.degraded),
             "cached": sum(1 for o in self.outcomes if o.cached),
-            "outcomes": [dataclasses.asdict(o) for o in self.outcomes],
+            "outcomes": [_outcome_dict(o) for o in self.outcomes],
         }
+
+
+def _outcome_dict(outcome: JobOutcome) -> dict[str, Any]:
+    """JSON-able form of one outcome (without the transient ``entry``)."""
+    data = dataclasses.asdict(outcome)
+    data.pop("entry")
+    return data
 
 
 def find_mesh_files(paths: Sequence[Path]) -> list[Path]:
@@ -247,36 +274,86 @@ def store_cached(cache_root: Path, key: str, bundle: AssetBundle) -> None:
     replace_folder(cache_root / key, fill)
 
 
-def process_job(job: ImportJob, options: Any, cache_root: Path, thumbnails: bool) -> JobOutcome:
-    """Import one file into the cache (or find it there); never raises for bad input."""
-    from asset_pipeline.importer import import_asset
-    from asset_pipeline.thumbnails import with_thumbnails
+def process_job(
+    job: ImportJob,
+    options: Any,
+    cache_root: Path,
+    thumbnails: bool,
+    accept_fallback: bool = False,
+) -> JobOutcome:
+    """Import one file into the cache (or find it there); never raises for bad input.
 
+    A degraded cache entry is reused only with ``accept_fallback``; a new degraded result is
+    cached as final only with it, else stored in a pending folder (see the module docstring).
+    """
     start = time.perf_counter()
     outcome = JobOutcome(path=str(job.path), asset_id=job.asset_id, ok=False)
     try:
         key = cache_key(job.path, options)
         outcome.cache_key = key
         cached = load_cached(cache_root, key, job.asset_id)
-        if cached is None:
-            imported = import_asset(job.path, job.asset_id, options)
-            bundle = imported.bundle
-            if thumbnails:
-                bundle = with_thumbnails(bundle)
-            report = {**imported.report, "cache_key": key, "pipeline_version": pipeline_version()}
-            files = {**bundle.files, DERIVATION_FILE: dumps_json(report)}
-            bundle = AssetBundle(meta=bundle.meta, files=files)
-            store_cached(cache_root, key, bundle)
-        else:
+        if cached is not None and (accept_fallback or not cached[1].get("degraded")):
             bundle, report = cached
-            outcome.cached = True
+            outcome.cached, outcome.entry = True, key
+        else:
+            bundle, report = _import_bundle(job, options, key, thumbnails, accept_fallback)
+            final = not report["degraded"] or report["fallback_accepted"]
+            outcome.entry = _store_result(cache_root, key, bundle, final)
         outcome.ok = True
+        outcome.degraded = bool(report.get("degraded"))
+        outcome.degraded_reason = report.get("degraded_reason")
         outcome.hulls = sum(1 for c in bundle.meta.collision)
         outcome.mass_kg = round(bundle.meta.mass, 4)
     except HolomjError as err:
         outcome.error = err.one_line()
     outcome.seconds = round(time.perf_counter() - start, 3)
     return outcome
+
+
+def _import_bundle(
+    job: ImportJob, options: Any, key: str, thumbnails: bool, accept_fallback: bool
+) -> tuple[AssetBundle, dict]:
+    """Import ``job``'s file: the bundle (with thumbnails and ``derivation.json``), the report."""
+    from asset_pipeline.importer import import_asset
+    from asset_pipeline.thumbnails import with_thumbnails
+
+    imported = import_asset(job.path, job.asset_id, options)
+    bundle = imported.bundle
+    if thumbnails:
+        bundle = with_thumbnails(bundle)
+    report = {
+        **imported.report,
+        "fallback_accepted": bool(imported.report["degraded"] and accept_fallback),
+        "cache_key": key,
+        "pipeline_version": pipeline_version(),
+    }
+    files = {**bundle.files, DERIVATION_FILE: dumps_json(report)}
+    return AssetBundle(meta=bundle.meta, files=files), report
+
+
+def _store_result(cache_root: Path, key: str, bundle: AssetBundle, final: bool) -> str:
+    """Store ``bundle`` as the cache entry ``key`` or, if not ``final``, in a pending folder.
+
+    Returns the folder (relative to ``cache_root``) that holds it.
+    """
+    entry = key if final else f"{PENDING_DIR}/{key}-{secrets.token_hex(4)}"
+    store_cached(cache_root, entry, bundle)
+    return entry
+
+
+def _sweep_pending(cache_root: Path, max_age_s: float = PENDING_MAX_AGE_S) -> None:
+    """Delete pending folders older than ``max_age_s`` (left behind by killed imports)."""
+    pending = cache_root / PENDING_DIR
+    if not pending.is_dir():
+        return
+    cutoff = time.time() - max_age_s
+    for entry in pending.iterdir():
+        try:
+            stale = entry.stat().st_mtime < cutoff
+        except OSError:
+            continue
+        if stale:
+            shutil.rmtree(entry, ignore_errors=True)
 
 
 def run_imports(
@@ -287,36 +364,35 @@ def run_imports(
     workers: int = 1,
     thumbnails: bool = True,
     on_done: Callable[[JobOutcome], None] | None = None,
+    accept_fallback: bool = False,
 ) -> ImportSummary:
     """Import ``jobs`` into the library at ``library_root`` with ``workers`` processes.
 
     A file that fails (bad mesh, crash of its worker) is reported and the others go on.
-    Each success is committed to the library as soon as it is done.
+    Each success is committed to the library as soon as it is done; a degraded one too, but it
+    is cached as final only with ``accept_fallback`` (see :func:`process_job`).
     """
     root = Path(library_root)
     cache_root = root / CACHE_DIR
     cache_root.mkdir(parents=True, exist_ok=True)
+    _sweep_pending(cache_root)
     summary = ImportSummary()
 
     def finish(job: ImportJob, outcome: JobOutcome) -> None:
-        if outcome.ok and outcome.cache_key is not None:
-            cached = load_cached(cache_root, outcome.cache_key, job.asset_id)
-            if cached is None:
-                outcome.ok, outcome.error = False, "cache entry vanished before commit"
-            else:
-                add_assets(root, [cached[0]])
+        _commit(root, cache_root, job, outcome)
         summary.outcomes.append(outcome)
         if on_done is not None:
             on_done(outcome)
 
     if workers <= 1 or len(jobs) <= 1:
         for job in jobs:
-            finish(job, process_job(job, options, cache_root, thumbnails))
+            finish(job, process_job(job, options, cache_root, thumbnails, accept_fallback))
         return summary
     context = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
         futures: dict[Future[JobOutcome], ImportJob] = {
-            pool.submit(process_job, job, options, cache_root, thumbnails): job for job in jobs
+            pool.submit(process_job, job, options, cache_root, thumbnails, accept_fallback): job
+            for job in jobs
         }
         for future in as_completed(futures):
             job = futures[future]
@@ -329,6 +405,21 @@ def run_imports(
             finish(job, outcome)
     summary.outcomes.sort(key=lambda o: o.path)
     return summary
+
+
+def _commit(root: Path, cache_root: Path, job: ImportJob, outcome: JobOutcome) -> None:
+    """Add a successful outcome's bundle to the library; then drop its pending folder, if any."""
+    if not outcome.ok or outcome.entry is None:
+        return
+    try:
+        cached = load_cached(cache_root, outcome.entry, job.asset_id)
+        if cached is None:
+            outcome.ok, outcome.error = False, "cache entry vanished before commit"
+        else:
+            add_assets(root, [cached[0]])
+    finally:
+        if outcome.entry.startswith(f"{PENDING_DIR}/"):
+            shutil.rmtree(cache_root / outcome.entry, ignore_errors=True)
 
 
 def iter_assets(root: Path) -> Iterable[AssetMeta]:

@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
+from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
@@ -94,11 +95,31 @@ def import_command(
     thumbnails: Annotated[
         bool, typer.Option("--thumbnails/--no-thumbnails", help="Render thumbnails.")
     ] = True,
+    accept_fallback: Annotated[
+        bool,
+        typer.Option(
+            "--accept-fallback",
+            help="Cache fallback decompositions (CoACD unavailable, crashed or timed out) as "
+            "final and reuse cached ones; without it the next import retries CoACD.",
+        ),
+    ] = False,
+    strict: Annotated[
+        bool,
+        typer.Option(
+            "--strict", help="Exit with 1 when any import was degraded (its asset is still added)."
+        ),
+    ] = False,
     as_json: Annotated[bool, typer.Option("--json", help="Print the summary as JSON.")] = False,
 ) -> None:
     """Import meshes (GLB, glTF, OBJ, STL, PLY) as simulation-ready assets.
 
-    Exits with 0 when every file was imported, 1 when any failed (the others are kept).
+    When CoACD is unavailable, crashes or times out, the asset gets a fallback decomposition
+    (coarser settings, else the single convex hull) and is reported as degraded: still added
+    to the library, marked in its derivation.json, but not cached unless --accept-fallback is
+    given, so the next import retries CoACD.
+
+    Exits with 0 when every file was imported (degraded ones included, unless --strict), 1 when
+    any failed (the others are kept).
     """
     from asset_pipeline.manage import plan_jobs, run_imports
 
@@ -127,27 +148,53 @@ def import_command(
                 on_done=lambda outcome: progress.update(
                     task, advance=1, description=outcome.asset_id
                 ),
+                accept_fallback=accept_fallback,
             )
         )
     if as_json:
         emit_json({"library": str(root), **summary.to_dict()})
     else:
-        table = Table(title=f"imported into {root}")
-        for column in ("asset", "result", "hulls", "mass kg", "s"):
-            table.add_column(column)
-        for o in summary.outcomes:
-            result = ("cached" if o.cached else "ok") if o.ok else f"[red]failed[/]: {o.error}"
-            table.add_row(
-                o.asset_id,
-                result,
-                str(o.hulls or ""),
-                f"{o.mass_kg:.3f}" if o.mass_kg else "",
-                f"{o.seconds:.1f}",
-            )
-        out_console.print(table)
-        out_console.print(f"{len(summary.succeeded)} imported, {len(summary.failed)} failed")
-    if summary.failed:
+        _print_summary(root, summary, accept_fallback)
+    if summary.failed or (strict and summary.degraded):
         raise typer.Exit(code=1)
+
+
+def _print_summary(root: Path, summary: Any, accept_fallback: bool) -> None:
+    """The import table, a warning line per degraded asset and the counts."""
+    table = Table(title=f"imported into {root}")
+    for column in ("asset", "result", "hulls", "mass kg", "s"):
+        table.add_column(column)
+    for o in summary.outcomes:
+        table.add_row(
+            o.asset_id,
+            _result_cell(o),
+            str(o.hulls or ""),
+            f"{o.mass_kg:.3f}" if o.mass_kg else "",
+            f"{o.seconds:.1f}",
+        )
+    out_console.print(table)
+    for o in summary.degraded:
+        out_console.print(
+            f"[yellow]warning: {escape(o.asset_id)}: ok (degraded: {escape(o.degraded_reason)}),"
+            f" {o.hulls} hull{'' if o.hulls == 1 else 's'}[/]"
+        )
+    if summary.degraded and not accept_fallback:
+        out_console.print(
+            "[yellow]degraded results are not cached: the next import retries CoACD "
+            "(--accept-fallback keeps them)[/]"
+        )
+    out_console.print(
+        f"{len(summary.succeeded)} imported, {len(summary.degraded)} degraded, "
+        f"{len(summary.failed)} failed"
+    )
+
+
+def _result_cell(outcome: Any) -> str:
+    """The result column of one import: ok or cached (yellow when degraded), or the error."""
+    if not outcome.ok:
+        return f"[red]failed[/]: {escape(outcome.error or '')}"
+    result = "cached" if outcome.cached else "ok"
+    return f"[yellow]{result} (degraded)[/]" if outcome.degraded else result
 
 
 def _import_options(
@@ -178,25 +225,27 @@ def list_command(
     category: Annotated[str | None, typer.Option(help="Only this category.")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
-    """List the assets of a library."""
+    """List the assets of a library (degraded: made from a fallback decomposition)."""
     from holomj.library.store import AssetLibrary, normalise_category
 
     root = resolve_library(library)
     lib = guard(lambda: AssetLibrary.open(root))
-    metas = [lib.get(i).meta for i in lib.ids()]
+    assets = [lib.get(i) for i in lib.ids()]
     if category is not None:
-        metas = [m for m in metas if normalise_category(m.category) == normalise_category(category)]
+        wanted = normalise_category(category)
+        assets = [a for a in assets if normalise_category(a.meta.category) == wanted]
     rows = [
         {
-            "id": m.id,
-            "category": m.category,
-            "size_m": [round(v, 3) for v in m.size],
-            "mass_kg": round(m.mass, 3),
-            "placement": m.placement,
-            "surfaces": len(m.surfaces),
-            "colliders": len(m.collision),
+            "id": a.meta.id,
+            "category": a.meta.category,
+            "size_m": [round(v, 3) for v in a.meta.size],
+            "mass_kg": round(a.meta.mass, 3),
+            "placement": a.meta.placement,
+            "surfaces": len(a.meta.surfaces),
+            "colliders": len(a.meta.collision),
+            "degraded": _is_degraded(a.root),
         }
-        for m in metas
+        for a in assets
     ]
     if as_json:
         emit_json(rows)
@@ -212,9 +261,20 @@ def list_command(
             f"{r['mass_kg']:.2f}",
             ",".join(r["placement"]),
             str(r["surfaces"]),
-            str(r["colliders"]),
+            f"{r['colliders']} [yellow](degraded)[/]" if r["degraded"] else str(r["colliders"]),
         )
     out_console.print(table)
+
+
+def _is_degraded(asset_root: Path) -> bool:
+    """Whether the asset's ``derivation.json`` marks it degraded (False when there is none)."""
+    derivation = asset_root / "derivation.json"
+    if not derivation.is_file():
+        return False
+    try:
+        return bool(json.loads(derivation.read_text()).get("degraded"))
+    except (OSError, ValueError, AttributeError):
+        return False
 
 
 @assets_app.command("show")

@@ -1,11 +1,15 @@
 """``holomj populate SCENE --on OBJECT --objects CAT[:N],...``: spawn-and-drop small objects.
 
-SCENE is a folder written by ``holomj compile``. The scene's own assets come from its
-``assets/`` library, the new objects' from ``--library`` (default: the default library). The
-populated scene is recompiled and written back into the same folder atomically, with
-``populate_report.json`` (every placement outcome; earlier runs are kept under ``runs``). Other
-top-level JSON reports are kept; anything else (renders, HTML reports) is stale once objects
-move in and is left out, which the report lists.
+SCENE is a folder written by ``holomj compile`` or ``holomj generate``. The scene's own assets
+come from its ``assets/`` library, the new objects' from ``--library`` (default: the default
+library). The folder's robot (``robot.json``), if any, stays: candidates are dropped with it in
+the world and the scene is recompiled with it. The populated scene is written back into the same
+folder atomically: ``scene.xml``, ``scene.json``, ``assets/``, ``objects.json``, ``navmap.json``,
+``navmap.png`` and ``robot.json`` afresh; ``report.json``, when the folder has one, replaced by the
+validation of the new scene (what ``holomj validate SCENE`` reports: furniture free); and
+``populate_report.json`` (every placement outcome; earlier runs are kept under ``runs``).
+Everything else is kept as it was; renders and ``report.html`` then show the scene before this
+run, which the report lists under ``stale_files`` (``holomj render SCENE`` refreshes them).
 
 Exit codes: 0 when every requested object was placed, 1 when some were not (the scene with the
 placed ones and the report are written all the same), 2 for bad input.
@@ -17,13 +21,19 @@ import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
 from holomj.cli_common import emit_json, guard, out_console
 
+if TYPE_CHECKING:
+    from holomj.library.store import AssetLibrary
+    from holomj.spec.report import StabilityReport
+    from holomj.spec.scene import SceneSpec
+
 POPULATE_REPORT = "populate_report.json"
+MAX_SEED = 2**32 - 1
 _ITEM = re.compile(r"^\s*([A-Za-z0-9_][A-Za-z0-9_.:|+\- ]*?)\s*(?::\s*(\d+)\s*)?$")
 
 
@@ -77,15 +87,22 @@ def populate_folder(
     library_path: Path | None = None,
     max_attempts: int = 20,
 ) -> PopulateFolderReport:
-    """Populate the exported scene in ``folder`` and write it back (see the module docstring)."""
+    """Populate the exported scene in ``folder`` and write it back (see the module docstring).
+
+    Raises :class:`~holomj.errors.InputError` for a folder that is not a holomj scene, a bad
+    seed or attempt count, an unknown receptacle or request.
+    """
     import numpy as np
 
     from holomj.errors import InputError
-    from holomj.export.writer import ASSETS_DIR, SCENE_JSON, SCENE_XML, export_scene
+    from holomj.export.writer import ASSETS_DIR, SCENE_JSON, export_scene
     from holomj.library.store import AssetLibrary
-    from holomj.mjcf.compiler import compile_scene
+    from holomj.mjcf.compiler import CompiledScene, compile_scene
     from holomj.physics.scene_io import holomj_folder
     from holomj.physics.spawn import merge_libraries, populate
+    from holomj.render.folder import RENDERS_DIR
+    from holomj.render.report_html import REPORT_HTML, REPORT_JSON
+    from holomj.robots.attach import attach_saved_robot
     from holomj.spec.scene_file import read_scene_file
 
     folder = Path(folder)
@@ -93,16 +110,22 @@ def populate_folder(
         raise InputError(
             "not a holomj scene folder (no scene.json and assets/library.json)",
             where=str(folder),
-            fix="pass a folder written by 'holomj compile'",
+            fix="pass a folder written by 'holomj compile' or 'holomj generate'",
         )
+    if not 0 <= seed <= MAX_SEED:
+        raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
+    if max_attempts < 1 or max_attempts > 1000:
+        raise InputError("must lie in [1, 1000]", where="--max-attempts")
     scene = read_scene_file(folder / SCENE_JSON)
     own = AssetLibrary.open(folder / ASSETS_DIR)
     libraries = [own]
     if library_path is not None:
         libraries.append(AssetLibrary.open(library_path))
     library = merge_libraries(*libraries)
-    if max_attempts < 1 or max_attempts > 1000:
-        raise InputError("must lie in [1, 1000]", where="--max-attempts")
+
+    def with_robot(compiled: CompiledScene) -> CompiledScene:
+        return attach_saved_robot(compiled, folder)
+
     result = populate(
         scene,
         library,
@@ -110,9 +133,9 @@ def populate_folder(
         requests,
         np.random.default_rng(seed),
         max_attempts=max_attempts,
+        attach=with_robot,
     )
-    compiled = compile_scene(result.scene, library)
-    kept, dropped = _other_entries(folder, {SCENE_XML, SCENE_JSON, ASSETS_DIR, POPULATE_REPORT})
+    compiled = with_robot(compile_scene(result.scene, library))
     run = {
         "receptacle": receptacle_id,
         "requests": [{"name": n, "count": c} for n, c in requests],
@@ -120,9 +143,21 @@ def populate_folder(
         "max_attempts": max_attempts,
         **result.to_dict(),
     }
+    written: dict[str, Any] = {}
+    if (folder / REPORT_JSON).exists():
+        validation = _validate(result.scene, library, folder)
+        written[REPORT_JSON] = validation.model_dump(mode="json")
+        run["validation"] = {
+            "ok": validation.ok,
+            "furniture": validation.furniture,
+            "counts": validation.counts,
+        }
     previous = _previous_runs(folder / POPULATE_REPORT)
-    report = {**run, "runs": [*previous, run], "dropped_files": dropped}
-    export_scene(compiled, folder, overwrite=True, extra_json={**kept, POPULATE_REPORT: report})
+    # Kept as they are, but made from the scene before this run.
+    stale = [name for name in (RENDERS_DIR, REPORT_HTML) if (folder / name).exists()]
+    report = {**run, "runs": [*previous, run], "stale_files": stale}
+    written[POPULATE_REPORT] = report
+    export_scene(compiled, folder, overwrite=True, extra_json=written, keep_from=folder)
     return PopulateFolderReport(
         folder=str(folder),
         receptacle=receptacle_id,
@@ -132,21 +167,18 @@ def populate_folder(
     )
 
 
-def _other_entries(folder: Path, skip: set[str]) -> tuple[dict[str, Any], list[str]]:
-    """Top-level JSON files to keep (name -> content) and the other entries left out."""
-    kept: dict[str, Any] = {}
-    dropped = []
-    for entry in sorted(folder.iterdir()):
-        if entry.name in skip:
-            continue
-        if entry.is_file() and entry.suffix == ".json":
-            try:
-                kept[entry.name] = json.loads(entry.read_text(encoding="utf-8"))
-                continue
-            except (OSError, ValueError):
-                pass
-        dropped.append(entry.name)
-    return kept, dropped
+def _validate(scene: SceneSpec, library: AssetLibrary, folder: Path) -> StabilityReport:
+    """The validation ``holomj validate FOLDER`` makes of ``scene`` (with the folder's robot):
+    default thresholds, furniture free, no sleeping."""
+    from holomj.mjcf.compiler import compile_scene
+    from holomj.physics.scene_io import loaded_from_compiled
+    from holomj.physics.settle import validate_loaded
+    from holomj.robots.attach import attach_saved_robot
+    from holomj.spec.report import Thresholds
+
+    compiled = attach_saved_robot(compile_scene(scene, library, furniture="free"), folder)
+    loaded = loaded_from_compiled(compiled, library, folder, folder)
+    return validate_loaded(loaded, Thresholds(), "free", sleep=False)
 
 
 def _previous_runs(path: Path) -> list[Any]:
@@ -159,7 +191,10 @@ def _previous_runs(path: Path) -> list[Any]:
 
 def populate_command(
     scene: Annotated[
-        Path, typer.Argument(metavar="SCENE", help="A folder written by 'holomj compile'.")
+        Path,
+        typer.Argument(
+            metavar="SCENE", help="A folder written by 'holomj compile' or 'holomj generate'."
+        ),
     ],
     on: Annotated[str, typer.Option("--on", help="Id of the receptacle object in the scene.")],
     objects: Annotated[
@@ -168,7 +203,9 @@ def populate_command(
             "--objects", help="Categories or asset ids with counts: CAT[:N],... e.g. mug:2,book."
         ),
     ],
-    seed: Annotated[int, typer.Option("--seed", help="Random seed.")] = 0,
+    seed: Annotated[
+        int, typer.Option("--seed", min=0, max=MAX_SEED, help="Random seed (0 to 2**32 - 1).")
+    ] = 0,
     library: Annotated[
         Path | None,
         typer.Option(
@@ -177,7 +214,10 @@ def populate_command(
         ),
     ] = None,
     max_attempts: Annotated[
-        int, typer.Option("--max-attempts", help="Candidate poses per object (1-1000).")
+        int,
+        typer.Option(
+            "--max-attempts", min=1, max=1000, help="Candidate poses per object (1-1000)."
+        ),
     ] = 20,
     as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
 ) -> None:
@@ -211,5 +251,19 @@ def populate_command(
                     f"{placement['reason']} after {placement['attempts']} attempts",
                     markup=True,
                 )
+        validation = outcome.report.get("validation")
+        if validation is not None:
+            counts = validation["counts"]
+            verdict = "[green]ok[/]" if validation["ok"] else "[red]NOT ok[/]"
+            out_console.print(
+                f"  report.json rewritten: validation {verdict}, {counts['stable']}/"
+                f"{counts['objects']} stable (furniture {validation['furniture']})"
+            )
+        if outcome.report["stale_files"]:
+            out_console.print(
+                f"  {' and '.join(outcome.report['stale_files'])} show the scene before this "
+                f"run: 'holomj render {outcome.folder}' refreshes them",
+                markup=False,
+            )
     if not outcome.all_placed:
         raise typer.Exit(code=1)

@@ -27,13 +27,28 @@ fi
 if [ ! -x .venv/bin/python ]; then
   "$python" -m venv .venv
 fi
-.venv/bin/python -m pip install -q --upgrade pip >/dev/null
+# pip runs quietly and its noise (index warnings, indented detail lines) is filtered out, but a
+# failed install prints everything pip said and stops the setup: a missing extra must not turn
+# tests into skips while CI stays green.
+pip_install() {
+  local log status=0
+  log="$(mktemp)"
+  .venv/bin/python -m pip install -q "$@" >"$log" 2>&1 || status=$?
+  if [ "$status" -ne 0 ]; then
+    cat "$log" >&2
+    rm -f "$log"
+    echo "setup: 'pip install $*' failed with exit code $status" >&2
+    exit "$status"
+  fi
+  grep -v -E "^(WARNING: Location|  |$)" "$log" || true  # grep exits 1 when nothing is left
+  rm -f "$log"
+}
+
+pip_install --upgrade pip
 spec="."
 if [ -n "$extras" ]; then spec=".[$extras]"; fi
-.venv/bin/python -m pip install -q -e "$spec" 2>&1 | grep -v -E "^(WARNING: Location|  |$)" || true
+pip_install -e "$spec"
 # The Panda for --robot panda (and its tests): holomj reads only its MJCF and meshes; its
 # dependencies pin an old mujoco, so it is installed without them (pyproject cannot say so).
-case ",$extras," in *,dev,*)
-  .venv/bin/python -m pip install -q --no-deps dm-robotics-panda 2>&1 | grep -v -E "^(WARNING: Location|  |$)" || true ;;
-esac
+case ",$extras," in *,dev,*) pip_install --no-deps dm-robotics-panda ;; esac
 .venv/bin/python -c "import holomj, mujoco; print(f'setup: holomj {holomj.__version__}, mujoco {mujoco.__version__}')"

@@ -37,6 +37,7 @@ import os
 import re
 import time
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -44,7 +45,7 @@ import numpy as np
 
 from holomj.errors import InputError, closest_names
 from holomj.library.store import AssetLibrary, LibraryAsset
-from holomj.mjcf.compiler import compile_scene
+from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.physics.drop_world import DropWorld, Outcome
 from holomj.physics.surfaces_world import (
@@ -134,11 +135,14 @@ def populate(
     settle_s: float = 1.5,
     batch: int = 8,
     nthread: int | None = None,
+    attach: Callable[[CompiledScene], CompiledScene] | None = None,
 ) -> PopulateResult:
     """Drop the requested small objects onto ``receptacle_id`` (see the module docstring).
 
     ``nthread`` worker threads drop candidates in parallel (default :func:`default_threads`);
-    the result does not depend on it.
+    the result does not depend on it. ``attach`` adds what the scene carries besides its
+    objects (a folder's robot, see :func:`holomj.robots.attach.attach_saved_robot`) to the
+    compiled world, so candidates are spawned clear of it and dropped against it.
 
     ``library`` must hold the scene's assets and the requested ones (see
     :func:`merge_libraries`). ``requests`` are
@@ -162,6 +166,8 @@ def populate(
 
     parked = _parked_scene(scene, receptacle, jobs)
     compiled = compile_scene(parked, library, furniture="as-is")
+    if attach is not None:
+        compiled = attach(compiled)
     threads = nthread or default_threads(batch)
     world = DropWorld(compiled, [j.object_id for j in jobs], nthread=threads)
     rec_start, _ = world.pose(receptacle_id)

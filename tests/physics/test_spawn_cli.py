@@ -9,7 +9,7 @@ import pytest
 from typer.testing import CliRunner
 
 from holomj.cli import app
-from holomj.cli_populate import parse_objects
+from holomj.cli_populate import parse_objects, populate_folder
 from holomj.errors import InputError
 from holomj.library import AssetLibrary
 from holomj.physics.scene_io import load_scene
@@ -45,6 +45,7 @@ def test_populate_writes_back_a_loadable_scene(folder: Path, default_library: As
     assert report["placed"] == 5 and report["requested"] == 5 and len(report["runs"]) == 1
     assert all(p["accepted"] for p in report["placements"])
     assert (folder / "import_report.json").is_file()  # other reports are kept
+    assert not (folder / "report.json").exists()  # none to rewrite: none is made
     loaded = load_scene(folder, furniture="as-is")
     assert len(loaded.scene.objects) == 6
     assert simulate(loaded.model, 1.0).warnings == {}
@@ -88,6 +89,19 @@ def test_bad_input_exits_2(folder: Path, default_library: AssetLibrary, args, me
     assert message in result.output
     assert (folder / "scene.json").read_text() == before
     assert not (folder / "populate_report.json").exists()
+
+
+@pytest.mark.parametrize("seed", ["-1", "4294967296"])
+def test_a_seed_out_of_range_exits_2(folder: Path, default_library: AssetLibrary, seed: str):
+    before = (folder / "scene.json").read_text()
+    result = invoke(folder, default_library, "--on", "rec", "--objects", "mug", "--seed", seed)
+    assert result.exit_code == 2, result.output
+    assert isinstance(result.exception, SystemExit) and "Traceback" not in result.output
+    errors = [line for line in result.output.splitlines() if "--seed" in line]
+    assert len(errors) == 1 and "Invalid value for '--seed'" in errors[0]
+    assert (folder / "scene.json").read_text() == before
+    with pytest.raises(InputError, match="--seed"):
+        populate_folder(folder, "rec", [("mug", 1)], seed=int(seed))
 
 
 def test_not_a_scene_folder_exits_2(tmp_path: Path, default_library: AssetLibrary) -> None:

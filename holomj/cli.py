@@ -188,5 +188,33 @@ def schema_command(
 
 
 def main() -> None:
-    """Console-script entry point."""
-    app()
+    """Console-script entry point: bad options and arguments give one line and exit 2."""
+    click = _click_exceptions()
+    try:
+        result = app(prog_name="holomj", standalone_mode=False)
+    except click.NoArgsIsHelpError as err:
+        help_text = err.format_message()  # rich help is printed as the error is made
+        if help_text.strip():
+            print(help_text, file=sys.stderr)
+        sys.exit(2)
+    except click.UsageError as err:
+        where = err.ctx.command_path if err.ctx else "holomj"
+        message = " ".join(err.format_message().split())
+        print(f"error: {where}: {message}", file=sys.stderr)
+        sys.exit(2)
+    except typer.Abort:
+        print("aborted", file=sys.stderr)
+        sys.exit(1)
+    except click.ClickException as err:
+        print(f"error: {' '.join(err.format_message().split())}", file=sys.stderr)
+        sys.exit(err.exit_code)
+    sys.exit(result if isinstance(result, int) else 0)
+
+
+def _click_exceptions():
+    """The exception classes of the click that typer runs on (typer >= 0.24 vendors its own)."""
+    try:
+        from typer._click import exceptions
+    except ImportError:  # an older typer on the real click
+        from click import exceptions
+    return exceptions

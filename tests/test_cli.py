@@ -192,3 +192,27 @@ def test_real_subprocess_bad_input_exit_code(tmp_path: Path) -> None:
     assert result.returncode == 2
     assert result.stderr.count("\n") == 1 and "Traceback" not in result.stderr
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (["populate", "SCENE", "--on", "table", "--objects", "mug", "--seed", "-1"], "--seed"),
+        (["generate", "a kitchen", "-o", "OUT", "--seed", "-1"], "--seed"),
+        (["validate", "SCENE", "--tolerance-mm", "-3"], "--tolerance-mm"),
+        (["compile", "--no-such-option"], "--no-such-option"),
+        (["validate"], "SCENE"),
+    ],
+)
+def test_real_subprocess_bad_options_are_one_line(
+    tmp_path: Path, args: list[str], needle: str
+) -> None:
+    """Option errors caught by the command-line parser, too, are one line with exit code 2."""
+    args = [str(tmp_path / a) if a in ("SCENE", "OUT") else a for a in args]
+    result = subprocess.run(
+        [sys.executable, "-m", "holomj", *args], capture_output=True, text=True, check=False
+    )
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.count("\n") == 1 and "Traceback" not in result.stderr, result.stderr
+    assert result.stderr.startswith("error: holomj") and needle in result.stderr
+    assert not (tmp_path / "OUT").exists()

@@ -1,14 +1,18 @@
 """``holomj generate`` (prompt -> validated scene folder) and ``holomj plan`` (prompt -> plan).
 
-Exit codes: 0 when the scene was written (``--strict``: and validated ok, else 1), 2 for bad input
-(empty prompt, existing OUT without ``--overwrite``, bad options), 1 for a failure of ours.
+Exit codes: 0 when the scene was written (``--strict``: and validated ok and, unless
+``--no-render``, rendered, else 1), 2 for bad input (empty prompt, existing OUT without
+``--overwrite``, bad options), 1 for a failure of ours. A render failure leaves the scene written;
+it is printed as one line on stderr (``render failed: ...``) and recorded in ``generate.json``
+(``render``) and ``generate.log``.
 """
 
 from __future__ import annotations
 
 import contextlib
+import json
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -53,6 +57,28 @@ LlmKeyOption = Annotated[
 LlmConfigOption = Annotated[
     Path | None, typer.Option("--llm-config", help="TOML file with an [llm] table.")
 ]
+
+
+def render_failure(out: Path) -> str | None:
+    """Why the render stage of the generate run that wrote ``out`` failed, or None when it
+    succeeded (read from ``generate.json``'s ``render`` record, which the stage writes)."""
+    from holomj.generate.runner import GENERATE_JSON
+
+    path = Path(out) / GENERATE_JSON
+    try:
+        outcome: Any = json.loads(path.read_text(encoding="utf-8")).get("render")
+    except (OSError, ValueError, AttributeError) as err:
+        return f"cannot read the render outcome from {path}: {err}"
+    if not isinstance(outcome, dict):
+        return f"{path} holds no render outcome"
+    if outcome.get("ok") is True:
+        return None
+    return str(outcome.get("error") or "unknown error")
+
+
+def _check_furniture(value: str) -> None:
+    if value not in ("free", "static"):
+        raise InputError(f"unknown value {value!r}", where="--furniture", fix="use free or static")
 
 
 def _check_planner(planner: str) -> None:
@@ -102,8 +128,19 @@ def generate_command(
         typer.Option("--layout-time", min=0.1, max=120.0, help="Layout solver seconds per room."),
     ] = 1.0,
     strict: Annotated[
-        bool, typer.Option("--strict", help="Exit 1 when the scene does not validate ok.")
+        bool,
+        typer.Option(
+            "--strict", help="Exit 1 when the scene does not validate ok or the render fails."
+        ),
     ] = False,
+    furniture: Annotated[
+        str,
+        typer.Option(
+            "--furniture",
+            help="How validation simulates furniture: free (all but the bolted-down fixtures: "
+            "counters, base cabinets, cookers, sanitary ware; the report lists them) or static.",
+        ),
+    ] = "free",
     robot: RobotOption = None,
     profile: ProfileOption = "default",
     as_json: Annotated[bool, typer.Option("--json", help="Print a JSON summary.")] = False,
@@ -115,6 +152,7 @@ def generate_command(
     from holomj.generate.runner import GenerateOptions, generate_scene
 
     guard(lambda: _check_planner(planner))
+    guard(lambda: _check_furniture(furniture))
     library_root = resolve_library(library)
     options = GenerateOptions(
         library=library_root,
@@ -132,6 +170,7 @@ def generate_command(
         llm_api_key=llm_api_key,
         llm_config=llm_config,
         layout_time_s=layout_time,
+        furniture=furniture,  # type: ignore[arg-type]
         robot=robot,
         profile=profile,
     )
@@ -144,7 +183,9 @@ def generate_command(
                 status.update(f"{stage}: {message}"[:120])
 
         result = guard(lambda: generate_scene(prompt, out, options, listener=listener))
+    failure = render_failure(out) if render else None
     summary = result.summary()
+    summary["render"] = None if not render else {"ok": failure is None, "error": failure}
     if as_json:
         emit_json(summary)
     elif not quiet:
@@ -163,7 +204,9 @@ def generate_command(
         out_console.print(f"  {timing}")
         for note in summary["notes"]:
             out_console.print(f"  note: {note}", markup=False)
-    if strict and not result.report.ok:
+    if failure is not None:  # even with --quiet or --json: it is not a success
+        err_console.print(f"render failed: {' '.join(failure.split())}", markup=False)
+    if strict and (not result.report.ok or failure is not None):
         raise typer.Exit(code=1)
 
 

@@ -6,10 +6,11 @@ the raw edge would sit inside the wall. Doors and windows are projected onto the
 The layout uses each retrieved asset's real footprint (width = the asset's y extent, depth = its
 x extent: assets face +X), so what the solver sees is what the simulator gets.
 
-Floor objects of fixture categories (``FIXED_CATEGORIES``: counters, appliances, sanitary ware,
-wardrobes, shelving) and anything taller than ``TALL_STATIC_M`` are static; other furniture gets
-a free joint. Wall objects are always static. Everything that could not be retrieved or placed is
-reported with the reason; nothing is dropped silently.
+Floor objects of the categories that are bolted down or plumbed in in real homes
+(``FIXED_CATEGORIES``: counters, base cabinets, the cooker, sanitary ware) are static fixtures;
+all other furniture, tall or not (wardrobes, bookshelves, fridges, pianos), gets a free joint, so
+validation puts it to the test. Wall objects are always static. Everything that could not be
+retrieved or placed is reported with the reason; nothing is dropped silently.
 """
 
 from __future__ import annotations
@@ -43,22 +44,16 @@ LAYOUT_MARGIN_M = 0.03  # beyond half the interior wall thickness
 # The layout keeps a walkway this wide (radius) between every two doors of a room: 5 cm more than
 # the navigation map's agent, so that its finer grid and real collider boxes still find the path.
 WALKER_RADIUS_M = 0.3
-TALL_STATIC_M = 1.5
 FIXED_CATEGORIES = frozenset(
     {
         "kitchen_counter",
         "sink_counter",
         "stove",
-        "fridge",
         "base_cabinet",
         "toilet",
         "bathtub",
         "shower_tray",
         "washbasin",
-        "wardrobe",
-        "bookshelf",
-        "shelving_unit",
-        "piano",
     }
 )
 # Library category -> wall-object kind of holomj.layout.wall_objects (default heights).
@@ -192,7 +187,7 @@ def furnish_room(
                 asset=asset_id,
                 position=(round(placement.x, 4), round(placement.y, 4), 0.0),
                 yaw_deg=round(placement.yaw_deg, 4),
-                static=meta.category in FIXED_CATEGORIES or meta.size[2] > TALL_STATIC_M,
+                static=meta.category in FIXED_CATEGORIES,
                 room=room.id,
             )
         )

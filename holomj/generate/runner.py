@@ -73,6 +73,9 @@ class GenerateOptions:
     llm_config: Path | None = None
     layout_time_s: float = 1.0
     sleep: bool = True
+    # free: furniture simulated free in validation, but for the bolted-down fixtures
+    # (furnish.FIXED_CATEGORIES, static in the scene); static: all furniture fixed.
+    furniture: Literal["free", "static"] = "free"
     robot: str | None = None  # registry name or MJCF path, attached before validation
     profile: str = "default"  # compile profile: default or mjx
 
@@ -341,15 +344,30 @@ class _Run:
                         f"yaw {robot.yaw_deg:.1f} deg, in {robot.room}",
                     )
         with self.log.stage("validate"):
-            loaded = loaded_from_compiled(self.compiled, self.library, self.out)
-            report = run_validation(loaded, Thresholds(), "as-is", self.options.sleep).report
+            # "free": the scene's own flags, where only bolted-down fixtures are static;
+            # "static": the scene compiled again for validation with all furniture held still.
+            validated = self.compiled
+            mode = "as-is"
+            if self.options.furniture == "static":
+                from holomj.robots.attach import reattach_robot
+
+                mode = "static"
+                held = compile_scene(self.scene, self.library, profile=profile, furniture=mode)
+                validated = reattach_robot(held, self.compiled)
+            loaded = loaded_from_compiled(validated, self.library, self.out)
+            report = run_validation(loaded, Thresholds(), mode, self.options.sleep).report
             self.log.info(
                 "validate",
                 f"{'ok' if report.ok else 'NOT ok'}: {report.counts['stable']}/"
-                f"{report.counts['objects']} stable, {report.counts['penetrations']} "
+                f"{report.counts['objects']} stable ({report.counts['dynamic']} simulated free, "
+                f"{report.counts['static']} static), {report.counts['penetrations']} "
                 f"penetration(s), max {report.max_penetration_m * 1000:.1f} mm, "
                 f"{sum(report.warnings.values())} warning(s)",
             )
+            if report.static_objects:
+                self.log.info("validate", "static: " + ", ".join(report.static_objects))
+            for obj in report.unstable():
+                self.log.info("validate", f"unstable: {obj.name}: {'; '.join(obj.reasons)}")
         self.report = report
 
     def export_stage(self) -> None:
@@ -393,18 +411,45 @@ class _Run:
         }
 
 
-def _render(out: Path, options: GenerateOptions, log: StageLog) -> None:
-    """Render views and the HTML report into ``out``; a failure is logged, not raised."""
+def _render(out: Path, options: GenerateOptions, log: StageLog) -> dict[str, Any]:
+    """Render views and the HTML report into ``out``; a failure is recorded, not raised.
+
+    The outcome goes into the log and, as ``render`` (``ok``, ``error``, ``images``,
+    ``report_html``), into ``out/generate.json`` (rewritten atomically), where the CLI reads it
+    to report a failure and fail ``--strict``; it is also returned. Any exception counts as a
+    failure (the scene is already written): ours with its one-line message, others with their
+    type.
+    """
+    import json
+
+    from holomj.export.writer import dump_json
     from holomj.render import render_folder, write_report_html
 
+    outcome: dict[str, Any] = {"ok": False, "error": None, "images": 0, "report_html": None}
     try:
         with log.stage("render"):
             width, height = options.render_size
             summary = render_folder(out, width=width, height=height)
+            outcome["images"] = sum(f.endswith(".png") for f in summary.files)
             page = write_report_html(out)
-            log.info("render", f"{len(summary.files)} image(s), report {page.name}")
+            outcome.update(ok=True, report_html=page.name)
+            log.info("render", f"{outcome['images']} image(s), report {page.name}")
     except HolomjError as err:
-        log.info("render", f"skipped: {err.one_line()}")
+        outcome["error"] = err.one_line()
+    except Exception as err:  # a bug of ours must not lose the scene written before
+        outcome["error"] = " ".join(f"{type(err).__name__}: {err}".split())
+    if outcome["error"] is not None:
+        log.info("render", f"render failed: {outcome['error']}")
+    record_path = out / GENERATE_JSON
+    try:
+        record = json.loads(record_path.read_text(encoding="utf-8"))
+        record["render"] = outcome
+        tmp = record_path.with_name(f".{record_path.name}.tmp")
+        tmp.write_text(dump_json(record), encoding="utf-8")
+        os.replace(tmp, record_path)
+    except (OSError, ValueError) as err:
+        log.info("render", f"could not record the render outcome in {GENERATE_JSON}: {err}")
+    return outcome
 
 
 def _write_log(path: Path, log: StageLog) -> None:

@@ -5,8 +5,9 @@ or kept as a CI artifact without ``renders/`` beside it (``embed=False`` links t
 instead, for a lighter page). No scripts, no external styles or fonts.
 
 Sections: verdict, plan, room views, close-ups, the object table (category, asset, size, mass,
-stable and drift from ``report.json`` when there is one, "not validated" otherwise), the
-validation details, the planner's notes (``plan.json``), import notes and render facts.
+stable, moved and turned from the authored pose from ``report.json`` when there is one, "not
+validated" otherwise), the validation details, the planner's notes (``plan.json``), import
+notes and render facts.
 """
 
 from __future__ import annotations
@@ -196,8 +197,8 @@ def _object_table(scene: SceneSpec, library: AssetLibrary, report: StabilityRepo
         "kind",
         "support",
         "stable",
-        "drift (mm)",
-        "rotation (°)",
+        "moved (mm)",
+        "turned (°)",
         "notes",
     ]
     rows = [
@@ -225,11 +226,15 @@ def _object_row(
         mass = f"{kg:.2f}"
     if result is not None:
         stable = "yes" if result.stable else "no"
-        drift, rotation = f"{result.drift_m * 1000:.2f}", f"{result.rotation_deg:.2f}"
+        # how far it ended from its authored pose (rule (b) of the stability rule)
+        drift = f"{result.displacement_m * 1000:.2f}"
+        rotation = f"{result.rotation_from_authored_deg:.2f}"
         notes = "; ".join(result.reasons)
     else:
         stable = "not in report" if validated else "not validated"
         drift = rotation = notes = "—"
+    # what the validation simulated, when known; else the scene's flag
+    free = result.dynamic if result is not None else not obj.static
     css = ' class="unstable"' if result is not None and not result.stable else ""
     cells = [
         (obj.id, ""),
@@ -238,7 +243,7 @@ def _object_row(
         (obj.asset, ""),
         (size, "num"),
         (mass, "num"),
-        ("static" if obj.static else "free", ""),
+        ("free" if free else "static", ""),
         (obj.support or "floor", ""),
         (stable, ""),
         (drift, "num"),
@@ -259,7 +264,9 @@ def _validation(report: StabilityReport | None) -> str:
         f"furniture validated as: {report.furniture}",
         f"settled: {'yes' if report.settled else 'no'} after {report.settle_time_s:.2f} s; "
         f"monitored {report.monitor_s:.2f} s",
-        f"max penetration while monitoring: {report.max_penetration_m * 1000:.2f} mm",
+        f"max penetration at t = 0: {report.max_penetration_m * 1000:.2f} mm; deepest contact "
+        f"while monitoring: {report.max_contact_depth_m * 1000:.2f} mm",
+        "held static (not put to the test): " + (", ".join(report.static_objects) or "none"),
         f"{report.sim_time_s:.1f} s simulated in {report.wall_time_s:.1f} s "
         f"({report.realtime_factor:.1f}× real time)",
     ]

@@ -209,10 +209,27 @@ def attach_saved_robot(compiled: CompiledScene, folder: Path) -> CompiledScene:
         for path in sorted((assets / "robot").rglob("*"))
         if path.is_file()
     }
+    return _attach_recorded(compiled, record, xml, files, str(xml_path))
+
+
+def reattach_robot(target: CompiledScene, source: CompiledScene) -> CompiledScene:
+    """``target`` (the same scene compiled otherwise, e.g. with static furniture) with the robot
+    that ``source`` carries, at the same spot, from ``source``'s files in memory; ``target``
+    unchanged when ``source`` has no robot."""
+    if source.robot is None:
+        return target
+    xml = source.files[ROBOT_XML].decode("utf-8")
+    files = {k: v for k, v in source.files.items() if k.startswith("robot/")}
+    return _attach_recorded(target, source.robot, xml, files, ROBOT_XML)
+
+
+def _attach_recorded(
+    compiled: CompiledScene, record: RobotRecord, xml: str, files: dict[str, bytes], where: str
+) -> CompiledScene:
     try:
         robot = mujoco.MjSpec.from_string(xml, assets=files)
     except ValueError as err:
         raise FormatError(
-            f"MuJoCo cannot load the robot: {' '.join(str(err).split())}", where=str(xml_path)
+            f"MuJoCo cannot load the robot: {' '.join(str(err).split())}", where=where
         ) from None
     return attach_prepared(compiled, robot, files, record, xml)

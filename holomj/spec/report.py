@@ -161,7 +161,18 @@ class Unsaved(FrozenModel):
 
 
 class StabilityReport(FrozenModel):
-    """Everything ``holomj validate`` found about a scene."""
+    """Everything ``holomj validate`` found about a scene.
+
+    An object is stable when (a) it is at rest at the end (its centre of mass moves less than
+    ``thresholds.drift_m`` and it turns less than ``thresholds.rotation_deg`` over the monitor
+    window), (b) its final pose is within ``thresholds.displacement_m`` and
+    ``thresholds.rotation_from_authored_deg`` of its authored pose at t = 0 (its centre of mass
+    may first sink up to ``thresholds.settle_drop_m`` onto its support), and (c) it is in no
+    penetration deeper than ``thresholds.tolerance_m`` at t = 0, does not end below the floor or
+    outside its room, rests on its intended support, and MuJoCo raised no warning. Centre of
+    mass and body orientation make the rule independent of the body frame (centre or foot).
+    ``ok``: every object stable and nothing found by the audit at t = 0.
+    """
 
     schema_version: Literal["2.0"] = REPORT_SCHEMA_VERSION
     ok: bool = Field(

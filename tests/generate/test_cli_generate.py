@@ -29,6 +29,8 @@ def test_bad_input_exits_2_and_writes_nothing(tmp_path: Path, default_library) -
     assert not out.exists()
     result = runner.invoke(app, ["generate", PROMPT, "-o", str(out), "--planner", "psychic"])
     assert result.exit_code == 2 and "--planner" in result.output
+    result = runner.invoke(app, ["generate", PROMPT, "-o", str(out), "--furniture", "glued"])
+    assert result.exit_code == 2 and "--furniture" in result.output
     out.mkdir()
     (out / "keep.txt").write_text("mine")
     result = generate(out, default_library.root)
@@ -39,14 +41,34 @@ def test_bad_input_exits_2_and_writes_nothing(tmp_path: Path, default_library) -
 @pytest.mark.slow
 def test_same_seed_same_bytes_other_seed_other_scene(tmp_path: Path, default_library) -> None:
     outs = {}
-    for name, seed in (("a", "5"), ("b", "5"), ("c", "6")):
-        result = generate(tmp_path / name, default_library.root, "--seed", seed, "--json")
+    for name, seed, furniture in (("a", "5", "free"), ("b", "5", "free"), ("c", "6", "static")):
+        result = generate(
+            tmp_path / name,
+            default_library.root,
+            "--seed",
+            seed,
+            "--json",
+            "--furniture",
+            furniture,
+        )
         assert result.exit_code == 0, result.output
         summary = json.loads(result.output)
         assert summary["ok"] and summary["planner"] == "offline"
         outs[name] = (tmp_path / name / "scene.xml").read_bytes()
     assert outs["a"] == outs["b"]
     assert outs["a"] != outs["c"]
+    # free: only fixtures and wall objects are held still, and the report says which
+    report = json.loads((tmp_path / "a" / "report.json").read_text())
+    scene = json.loads((tmp_path / "a" / "scene.json").read_text())
+    held = {o["name"] for o in report["objects"] if not o["dynamic"]}
+    assert report["furniture"] == "as-is" and set(report["static_objects"]) == held
+    assert any(o["dynamic"] for o in report["objects"])
+    assert {o["id"] for o in scene["objects"] if o["static"]} <= held
+    # static: every piece of furniture is held still
+    report = json.loads((tmp_path / "c" / "report.json").read_text())
+    scene = json.loads((tmp_path / "c" / "scene.json").read_text())
+    floor = {o["id"] for o in scene["objects"] if o.get("support") is None}
+    assert report["furniture"] == "static" and floor <= set(report["static_objects"])
     log = (tmp_path / "a" / "generate.log").read_text()
     for stage in ("plan", "retrieve", "layout", "small_objects", "validate", "export"):
         assert f"] {stage}: done" in log
@@ -120,3 +142,61 @@ def test_plan_prints_a_valid_plan() -> None:
     assert result.exit_code == 0, result.output
     plan = ScenePlan.model_validate_json(result.stdout)
     assert plan.rooms and plan.seed == 2
+
+
+def test_a_render_failure_is_printed_recorded_and_fails_strict(
+    tmp_path: Path, default_library, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from holomj.errors import HolomjError
+
+    def no_gl(*args, **kwargs):
+        raise HolomjError("no OpenGL backend can render headless (MUJOCO_GL=egl: test)")
+
+    monkeypatch.setattr("holomj.render.render_folder", no_gl)
+    out = tmp_path / "out"
+    base = ["generate", PROMPT, "-o", str(out), "--library", str(default_library.root)]
+    result = runner.invoke(app, [*base, "--strict"])
+    assert result.exit_code == 1, result.output
+    assert json.loads((out / "report.json").read_text())["ok"]  # only the render failed
+    lines = [line for line in result.stderr.splitlines() if "render failed" in line]
+    assert lines == ["render failed: no OpenGL backend can render headless (MUJOCO_GL=egl: test)"]
+    record = json.loads((out / "generate.json").read_text())
+    assert record["render"]["ok"] is False and "no OpenGL backend" in record["render"]["error"]
+    assert "render: render failed: no OpenGL backend" in (out / "generate.log").read_text()
+    assert (out / "scene.xml").is_file() and not (out / "report.html").exists()
+    # Without --strict the scene counts as written (exit 0), but the failure is still shown.
+    result = runner.invoke(app, [*base, "--overwrite", "--json"])
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["render"] == {"ok": False, "error": lines[0][15:]}
+    assert "render failed: no OpenGL backend" in result.stderr
+    # A render that works: --strict exits 0 and the record says so.
+    from holomj.render import RenderSummary
+
+    def fake_render(folder: Path, **kwargs) -> RenderSummary:
+        return RenderSummary(str(folder), "egl", "fake", {}, ["renders/top.png"], [])
+
+    def fake_page(folder: Path) -> Path:
+        (folder / "report.html").write_text("<html></html>")
+        return folder / "report.html"
+
+    monkeypatch.setattr("holomj.render.render_folder", fake_render)
+    monkeypatch.setattr("holomj.render.write_report_html", fake_page)
+    result = runner.invoke(app, [*base, "--overwrite", "--strict"])
+    assert result.exit_code == 0, result.output
+    assert "render failed" not in result.output
+    record = json.loads((out / "generate.json").read_text())
+    expected = {"ok": True, "error": None, "images": 1, "report_html": "report.html"}
+    assert record["render"] == expected
+
+
+def test_render_failure_reads_the_generate_record(tmp_path: Path) -> None:
+    from holomj.cli_generate import render_failure
+
+    record = tmp_path / "generate.json"
+    assert "cannot read the render outcome" in (render_failure(tmp_path) or "")
+    record.write_text(json.dumps({"prompt": "x"}))
+    assert "holds no render outcome" in (render_failure(tmp_path) or "")
+    record.write_text(json.dumps({"render": {"ok": False, "error": "boom"}}))
+    assert render_failure(tmp_path) == "boom"
+    record.write_text(json.dumps({"render": {"ok": True, "error": None}}))
+    assert render_failure(tmp_path) is None

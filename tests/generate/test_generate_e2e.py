@@ -9,8 +9,9 @@ from pathlib import Path
 import mujoco
 import pytest
 
-from holomj.generate.furnish import object_id
+from holomj.generate.furnish import FIXED_CATEGORIES, object_id
 from holomj.generate.runner import GenerateOptions, generate_scene
+from holomj.physics.settle import validate_path
 
 PROMPTS = [
     "a small kitchen",
@@ -45,6 +46,17 @@ def test_generate_gives_a_valid_stable_scene_with_the_requested_objects(
     report = json.loads((out / "report.json").read_text())
     assert report["ok"], (prompt, report["counts"], result.record["unplaced"])
     assert report["counts"]["unstable"] == 0 and report["counts"]["penetrations"] == 0
+    # Only bolted-down fixtures (and wall objects) were held still; all else was put to the test.
+    scene = {o["id"]: o for o in json.loads((out / "scene.json").read_text())["objects"]}
+    assert set(report["static_objects"]) == {k for k, o in scene.items() if o["static"]} | {
+        o["name"] for o in report["objects"] if not o["dynamic"]
+    }
+    for name in report["static_objects"]:
+        asset = default_library.get(scene[name]["asset"]).meta
+        assert asset.category in FIXED_CATEGORIES or set(asset.placement) <= {"wall", "ceiling"}
+    # And 'holomj validate' with every piece of furniture free agrees.
+    free = validate_path(out, furniture="free", sleep=True)
+    assert free.ok, (prompt, [(o.name, o.reasons) for o in free.unstable()])
 
     scene_ids = {o["id"] for o in json.loads((out / "scene.json").read_text())["objects"]}
     plan = result.plan

@@ -66,6 +66,8 @@ def _report(crate_stable: bool) -> StabilityReport:
             name=name,
             stable=stable,
             dynamic=True,
+            displacement_m=drift,
+            rotation_from_authored_deg=0.5,
             drift_m=drift,
             rotation_deg=0.5,
             path_m=drift,

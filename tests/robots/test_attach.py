@@ -23,6 +23,7 @@ from holomj.robots.attach import (
     attach_saved_robot,
     place_robot,
     read_robot_record,
+    reattach_robot,
 )
 from holomj.robots.placement import Spot
 from holomj.spec.report import Thresholds
@@ -174,3 +175,20 @@ def test_validate_and_repair_keep_the_robot(with_jaco: CompiledScene, tmp_path: 
     poses = {o["id"]: o["position"] for o in scene["objects"]}
     for obj in fresh["objects"]:
         np.testing.assert_allclose(obj["position"], poses[obj["id"]], atol=1e-6)
+
+
+def test_reattach_puts_the_same_robot_on_another_compile_of_the_scene(
+    with_jaco: CompiledScene, two_room_scene: SceneSpec, empty_library: AssetLibrary
+) -> None:
+    """The robot moves, in memory, onto the scene compiled with static furniture."""
+    held = compile_scene(two_room_scene, empty_library, furniture="static")
+    again = reattach_robot(held, with_jaco)
+    assert again.robot == with_jaco.robot
+    mount_a = mujoco.MjData(with_jaco.model)
+    mount_b = mujoco.MjData(again.model)
+    mujoco.mj_kinematics(with_jaco.model, mount_a)
+    mujoco.mj_kinematics(again.model, mount_b)
+    body = MOUNT_BODY
+    assert mount_b.body(body).xpos == pytest.approx(mount_a.body(body).xpos)
+    assert again.model.nbody == with_jaco.model.nbody
+    assert reattach_robot(held, held) is held  # nothing to carry over

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 from typing import Any
 
-from holomj.atomic import replace_folder
+from holomj.atomic import replace_folder, write_file
 from holomj.errors import AssetNotFoundError, OutputExistsError, SpecError
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.base import read_json, validate_model
@@ -229,10 +229,7 @@ def _read_index(root: Path) -> LibraryIndex:
 
 
 def _commit_index(root: Path, index: LibraryIndex) -> None:
-    tmp = root / f".{INDEX_FILE}.tmp-{os.getpid()}"
-    tmp.unlink(missing_ok=True)
-    _write_file(tmp, index_bytes(index))
-    os.replace(tmp, root / INDEX_FILE)
+    write_file(root / INDEX_FILE, index_bytes(index))
 
 
 def _free_folder(base: str, taken: set[str]) -> str:

@@ -1,12 +1,13 @@
-"""Atomic folder writes: build beside the target, then rename into place.
+"""Atomic writes: the one writer for files and the one for folders.
 
-Used by every writer of folders (exported scenes, asset libraries), so a crash or a rejected
-input never leaves a half-written folder and an existing one is only replaced once the new one
-is complete.
+Both build beside the target and rename into place, so a crash or a rejected input never leaves
+a half-written file or folder, and an existing one is only replaced once the new one is
+complete. Every writer of output folders, reports and asset libraries goes through them.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 import shutil
 import tempfile
@@ -43,3 +44,38 @@ def replace_folder(target: Path, fill: Callable[[Path], None]) -> None:
     finally:
         if tmp.exists():
             shutil.rmtree(tmp, ignore_errors=True)
+
+
+def write_file(path: Path, data: str | bytes) -> None:
+    """Write ``data`` (text as UTF-8, or bytes) to ``path`` atomically and durably: a synced
+    temporary file beside it, renamed over ``path``, then the folder synced (the new content
+    survives a crash or ``kill -9`` right after). The folder must exist."""
+    path = Path(path)
+    payload = data.encode("utf-8") if isinstance(data, str) else data
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(payload)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+    _sync_folder(path.parent)
+
+
+def _sync_folder(folder: Path) -> None:
+    """fsync a folder so a rename inside it is durable (a no-op where folders cannot be opened)."""
+    try:
+        fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)

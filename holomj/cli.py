@@ -87,7 +87,7 @@ def compile_command(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
 ) -> None:
     """Compile a scene or house file into a self-contained MuJoCo package in OUT."""
-    from holomj.pipeline import compile_file
+    from holomj.jobs.compile import compile_file
 
     library_root = resolve_library(library)
     with (
@@ -144,7 +144,7 @@ def info_command(
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
     """Rooms, objects, bodies, geoms and mass of an exported scene."""
-    from holomj.export.info import folder_summary
+    from holomj.jobs.info import folder_summary
 
     summary = guard(lambda: folder_summary(folder))
     if as_json:

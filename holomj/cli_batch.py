@@ -19,7 +19,7 @@ from holomj.errors import InputError
 
 if TYPE_CHECKING:
     from holomj.batch.engine import Engine
-    from holomj.batch.jobs import Job
+    from holomj.batch.job_list import Job
     from holomj.batch.result import JobOptions, JobResult
     from holomj.batch.run import BatchOutcome
 
@@ -88,7 +88,7 @@ def batch_command(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress, no table.")] = False,
 ) -> None:
     """Build many scenes: each job in its own worker process, resumable, with a summary."""
-    from holomj.batch.jobs import parse_seeds, read_jobs
+    from holomj.batch.job_list import parse_seeds, read_jobs
     from holomj.batch.local import LocalEngine
     from holomj.batch.ray_engine import RayEngine, import_ray
     from holomj.batch.result import JobOptions

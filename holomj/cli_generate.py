@@ -62,7 +62,7 @@ LlmConfigOption = Annotated[
 def render_failure(out: Path) -> str | None:
     """Why the render stage of the generate run that wrote ``out`` failed, or None when it
     succeeded (read from ``generate.json``'s ``render`` record, which the stage writes)."""
-    from holomj.generate.runner import GENERATE_JSON
+    from holomj.jobs.generate import GENERATE_JSON
 
     path = Path(out) / GENERATE_JSON
     try:
@@ -149,7 +149,7 @@ def generate_command(
     """Build a physically valid scene from a text prompt: plan, retrieve, lay out, drop small
     objects, validate, export (and render)."""
     from holomj.cli_assets import resolve_library
-    from holomj.generate.runner import GenerateOptions, generate_scene
+    from holomj.jobs.generate import GenerateOptions, generate_scene
 
     guard(lambda: _check_planner(planner))
     guard(lambda: _check_furniture(furniture))
@@ -224,9 +224,9 @@ def plan_command(
     llm_config: LlmConfigOption = None,
 ) -> None:
     """Plan a scene from a prompt without building it: print (or write) the ScenePlan JSON."""
-    from holomj.export.writer import dump_json
-    from holomj.generate.runner import PlanOptions, make_plan
-    from holomj.generate.stage_log import StageLog
+    from holomj.jobs.folder import dump_json
+    from holomj.jobs.generate import PlanOptions, make_plan
+    from holomj.jobs.stage_log import StageLog
     from holomj.library.store import AssetLibrary
 
     guard(lambda: _check_planner(planner))

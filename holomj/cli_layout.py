@@ -7,8 +7,6 @@ output with the reason), 2 for bad input, 1 for a failure of ours.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Annotated
 
@@ -48,10 +46,9 @@ def solve_command(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
 ) -> None:
     """Place the objects of one room; write placements, constraint report and unplaced objects."""
-    import numpy as np
-
     from holomj.layout.room_problem import load_problem
     from holomj.layout.solve import SOLVERS, solve_room
+    from holomj.seeds import seed_rng
 
     if solver not in SOLVERS:
         guard(
@@ -66,7 +63,7 @@ def solve_command(
     problem = guard(lambda: load_problem(input_path))
     result = guard(
         lambda: solve_room(
-            problem, solver=solver, time_limit_s=time_limit, rng=np.random.default_rng(seed)
+            problem, solver=solver, time_limit_s=time_limit, rng=seed_rng(seed)
         )
     )
     data = result.to_dict()
@@ -93,17 +90,13 @@ def _raise(err: Exception) -> None:
 
 def _write_json_atomic(path: Path, data: dict) -> None:
     """Write JSON beside the target and rename it into place."""
+    from holomj.atomic import write_file
+
     path = Path(path)
     parent = path.parent if str(path.parent) else Path(".")
     if not parent.is_dir():
         raise InputError("output folder does not exist", where=str(parent))
-    tmp: str | None = None
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=parent)
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            handle.write(json.dumps(data, indent=2, sort_keys=True) + "\n")
-        os.replace(tmp, path)
+        write_file(path, json.dumps(data, indent=2, sort_keys=True) + "\n")
     except OSError as err:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
         raise InputError(f"cannot write: {err.strerror or err}", where=str(path)) from None

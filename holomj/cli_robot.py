@@ -59,8 +59,8 @@ def add_robot_command(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing on success.")] = False,
 ) -> None:
     """Attach a robot to an exported scene at a free floor spot reachable from the entrance."""
+    from holomj.jobs.add_robot import add_robot_to_folder
     from holomj.mjcf.compiler import check_profile
-    from holomj.robots.folder import add_robot_to_folder
 
     checked = guard(lambda: check_profile(profile))
     result = guard(

@@ -7,10 +7,6 @@ with ``--repair``, 1 when an object could not be saved; 2 for bad input.
 from __future__ import annotations
 
 import contextlib
-import json
-import os
-import sys
-import tempfile
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -75,7 +71,8 @@ def validate_command(
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing.")] = False,
 ) -> None:
     """Audit a scene at t = 0, let it settle, and report every object's stability."""
-    from holomj.physics.settle import validate_path
+    from holomj.jobs.folder import write_json_file
+    from holomj.jobs.validate import validate
 
     if furniture not in ("free", "static", "as-is"):
         guard(lambda: _bad_furniture(furniture))
@@ -89,12 +86,13 @@ def validate_command(
         if show and err_console.is_terminal
         else contextlib.nullcontext()
     ):
-        if repair:
-            report = guard(lambda: _repair_then_validate(scene, thresholds, mode, sleep))
-        else:
-            report = guard(lambda: validate_path(scene, thresholds, mode, sleep))
+        report = guard(
+            lambda: validate(
+                scene, thresholds=thresholds, furniture=mode, sleep=sleep, repair=repair
+            )
+        )
     if json_out is not None:
-        guard(lambda: write_report(report, json_out))
+        guard(lambda: write_json_file(json_out, report.model_dump(mode="json")))
     if show:
         print_summary(report)
     elif not quiet and str(json_out) != "-":
@@ -109,44 +107,6 @@ def validate_command(
 
 def _bad_furniture(value: str) -> None:
     raise InputError(f"unknown --furniture {value!r}", fix="use free, static or as-is")
-
-
-def _repair_then_validate(
-    scene: Path,
-    thresholds: Thresholds,
-    furniture: Literal["free", "static", "as-is"],
-    sleep: bool,
-) -> StabilityReport:
-    from holomj.physics.repair import repair_folder
-    from holomj.physics.settle import validate_path
-
-    outcome = repair_folder(scene, thresholds, furniture, sleep)
-    report = validate_path(outcome.folder, thresholds, furniture, sleep)
-    return report.model_copy(update={"repaired": outcome.repaired, "unsaved": outcome.unsaved})
-
-
-def write_report(report: StabilityReport, path: Path) -> None:
-    """Write the report as JSON, atomically (temp file beside it, then rename); '-': stdout."""
-    text = json.dumps(report.model_dump(mode="json"), indent=2, sort_keys=True) + "\n"
-    if str(path) == "-":
-        sys.stdout.write(text)
-        return
-    path = Path(path)
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8") as handle:
-                handle.write(text)
-            os.replace(tmp, path)
-        except BaseException:
-            with contextlib.suppress(OSError):
-                os.unlink(tmp)
-            raise
-    except OSError as err:
-        raise InputError(
-            f"cannot write the report: {err.strerror or err}", where=str(path)
-        ) from None
 
 
 def _headline(report: StabilityReport) -> str:

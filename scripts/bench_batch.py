@@ -42,7 +42,7 @@ def main() -> int:
     modes = [m.strip() for m in args.modes.split(",") if m.strip()]
 
     from asset_pipeline.default_library import ensure_default_library
-    from holomj.batch.jobs import read_jobs
+    from holomj.batch.job_list import read_jobs
     from holomj.batch.local import LocalEngine
     from holomj.batch.result import JobOptions
     from holomj.batch.run import run_batch

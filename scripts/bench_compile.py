@@ -22,7 +22,7 @@ import mujoco
 from bench_scenes import grid_house  # sibling module in scripts/
 
 from asset_pipeline.default_library import ensure_default_library
-from holomj.export import export_scene
+from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.physics.smoke import simulate
@@ -44,7 +44,7 @@ def main() -> int:
             start = time.perf_counter()
             compiled = compile_scene(scene, library)
             mid = time.perf_counter()
-            export_scene(compiled, Path(tmp) / f"out_{i}")
+            write_scene_folder(compiled, Path(tmp) / f"out_{i}")
             end = time.perf_counter()
             compile_times.append(mid - start)
             export_times.append(end - mid)

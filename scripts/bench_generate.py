@@ -37,7 +37,7 @@ def main() -> int:
     seeds = [int(s) for s in args.seeds.split(",") if s.strip()]
 
     from asset_pipeline.default_library import ensure_default_library
-    from holomj.generate.runner import GenerateOptions, generate_scene
+    from holomj.jobs.generate import GenerateOptions, generate_scene
     from holomj.retrieval.text import text_encoder
 
     library = ensure_default_library()

@@ -18,19 +18,18 @@ import mujoco
 from bench_scenes import grid_house  # sibling module in scripts/
 
 from asset_pipeline.default_library import ensure_default_library
-from holomj.export import export_scene
+from holomj.jobs.folder import load_for_physics, write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
-from holomj.physics.scene_io import load_scene
 from holomj.physics.settle import validate_loaded
 from holomj.physics.spawn_bench import bench_populate
 
 
 def bench_validate(library: AssetLibrary, n: int, sleep: bool, tmp: Path) -> dict:
     """Compile a grid house of ``n`` objects, then validate it with free furniture."""
-    out = export_scene(compile_scene(grid_house(library, n), library), tmp / f"house_{n}")
+    out = write_scene_folder(compile_scene(grid_house(library, n), library), tmp / f"house_{n}")
     start = time.perf_counter()
-    loaded = load_scene(out, furniture="free")
+    loaded = load_for_physics(out, furniture="free")
     load_s = time.perf_counter() - start
     report = validate_loaded(loaded, sleep=sleep)
     stable = sum(1 for o in report.objects if o.stable)

@@ -23,7 +23,7 @@ from typing import Any
 from bench_scenes import grid_house  # sibling module in scripts/
 
 from asset_pipeline.default_library import ensure_default_library
-from holomj.export import export_scene
+from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.render import gl, render_folder
@@ -67,7 +67,7 @@ def main() -> int:
     library = AssetLibrary.open(ensure_default_library())
     scene = grid_house(library, args.objects)
     with tempfile.TemporaryDirectory() as tmp:
-        out = export_scene(compile_scene(scene, library), Path(tmp) / "house")
+        out = write_scene_folder(compile_scene(scene, library), Path(tmp) / "house")
         scene = read_scene(out)
         names = ["render/top"] + [f"render/room/{r.id}" for r in scene.rooms]
         rs = load_render_scene(out, scene, names, args.width, args.height)

@@ -1,6 +1,6 @@
 """``holomj batch``: many scenes from a jobs file, each job isolated in its own process.
 
-- :mod:`~holomj.batch.jobs`: the jobs file (prompts or house JSON paths) and job ids;
+- :mod:`~holomj.batch.job_list`: the jobs file (prompts or house JSON paths) and job ids;
 - :mod:`~holomj.batch.runner`: the job function run inside a worker (generate, or compile +
   validate), which writes the job's folder and, last, its result marker;
 - :mod:`~holomj.batch.resume`: what is complete, cleaning half-done jobs, the folder lock;
@@ -12,7 +12,7 @@
 
 from __future__ import annotations
 
-from holomj.batch.jobs import Job, parse_seeds, read_jobs
+from holomj.batch.job_list import Job, parse_seeds, read_jobs
 from holomj.batch.result import JobOptions, JobResult
 
 __all__ = ["Job", "JobOptions", "JobResult", "parse_seeds", "read_jobs"]

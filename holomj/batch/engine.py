@@ -6,7 +6,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Protocol
 
-from holomj.batch.jobs import Job
+from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult
 
 OnStart = Callable[[Job], None]

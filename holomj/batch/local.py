@@ -25,7 +25,7 @@ from multiprocessing.process import BaseProcess
 from pathlib import Path
 
 from holomj.batch.engine import DEFAULT_TIMEOUT_S, OnDone, OnStart, timeout_message
-from holomj.batch.jobs import Job
+from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult, failed_result
 from holomj.batch.resume import clean_partial
 from holomj.batch.runner import JobFunction, run_job

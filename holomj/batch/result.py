@@ -7,7 +7,7 @@ from typing import Literal
 
 from pydantic import Field
 
-from holomj.batch.jobs import Job
+from holomj.batch.job_list import Job
 from holomj.spec.base import FrozenModel
 
 Status = Literal["ok", "unstable", "failed"]

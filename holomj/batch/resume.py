@@ -16,7 +16,7 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
-from holomj.batch.jobs import Job
+from holomj.batch.job_list import Job
 from holomj.batch.result import JobResult
 from holomj.errors import InputError
 

@@ -15,9 +15,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from holomj.atomic import write_file
 from holomj.batch.engine import Engine, OnDone, OnStart
-from holomj.batch.files import write_text_atomic
-from holomj.batch.jobs import Job
+from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult
 from holomj.batch.resume import batch_lock, clean_partial, completed
 from holomj.batch.summary import BatchTotals, append_result, totals, write_summary
@@ -109,4 +109,4 @@ def _write_batch_json(
         "options": options.model_dump(mode="json"),
         "jobs": [job.model_dump(mode="json") for job in jobs],
     }
-    write_text_atomic(out_dir / BATCH_JSON, json.dumps(record, indent=2, sort_keys=True) + "\n")
+    write_file(out_dir / BATCH_JSON, json.dumps(record, indent=2, sort_keys=True) + "\n")

@@ -8,20 +8,18 @@ marker. A job cleans its own leftovers first, so a job killed half-way simply ru
 
 from __future__ import annotations
 
-import json
 import time
 import traceback
 from collections.abc import Callable
 from pathlib import Path
 
-from holomj.batch.files import write_text_atomic
-from holomj.batch.jobs import Job
+from holomj.atomic import write_file
+from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult, failed_result
 from holomj.batch.resume import MARKER, clean_partial, job_folder
 from holomj.errors import HolomjError
+from holomj.jobs.folder import REPORT_JSON, write_report
 from holomj.spec.report import StabilityReport
-
-REPORT_JSON = "report.json"
 
 JobFunction = Callable[[Job, Path, JobOptions], JobResult]
 
@@ -51,7 +49,7 @@ def run_job(job: Job, out_dir: Path, options: JobOptions) -> JobResult:
         seconds=round(time.perf_counter() - start, 3),
         output=job.id,
     )
-    write_text_atomic(folder / MARKER, result.model_dump_json(indent=2) + "\n")
+    write_file(folder / MARKER, result.model_dump_json(indent=2) + "\n")
     return result
 
 
@@ -70,7 +68,7 @@ def execute(function: JobFunction, job: Job, out_dir: Path, options: JobOptions)
 
 
 def _generate(job: Job, folder: Path, options: JobOptions) -> StabilityReport:
-    from holomj.generate.runner import GenerateOptions, generate_scene
+    from holomj.jobs.generate import GenerateOptions, generate_scene
 
     generate_options = GenerateOptions(
         library=options.library,
@@ -83,13 +81,12 @@ def _generate(job: Job, folder: Path, options: JobOptions) -> StabilityReport:
 
 
 def _compile_and_validate(job: Job, folder: Path, options: JobOptions) -> StabilityReport:
-    from holomj.physics.settle import validate_path
-    from holomj.pipeline import compile_file
+    from holomj.jobs.compile import compile_file
+    from holomj.jobs.validate import validate
 
     compile_file(
         Path(job.input), folder, library_path=options.library, check_seconds=options.check_seconds
     )
-    report = validate_path(folder)
-    text = json.dumps(report.model_dump(mode="json"), indent=2, sort_keys=True) + "\n"
-    write_text_atomic(folder / REPORT_JSON, text)
+    report = validate(folder)
+    write_report(folder, REPORT_JSON, report.model_dump(mode="json"))
     return report

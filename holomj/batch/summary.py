@@ -12,7 +12,8 @@ from pathlib import Path
 
 from pydantic import Field
 
-from holomj.batch.files import append_line_synced, write_text_atomic
+from holomj.atomic import write_file
+from holomj.batch.files import append_line_synced
 from holomj.batch.result import JobResult
 from holomj.spec.base import FrozenModel
 
@@ -32,7 +33,7 @@ def append_result(out_dir: Path, result: JobResult) -> None:
 def write_summary(out_dir: Path, results: Sequence[JobResult]) -> Path:
     """Replace ``out_dir/summary.jsonl`` with ``results``, one line each; return its path."""
     path = Path(out_dir) / SUMMARY
-    write_text_atomic(path, "".join(summary_line(r) + "\n" for r in results))
+    write_file(path, "".join(summary_line(r) + "\n" for r in results))
     return path
 
 

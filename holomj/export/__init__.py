@@ -1,5 +1,4 @@
-"""The single writer of output folders."""
+"""Output formats in memory: ``objects.json`` records, the navigation map, scene summaries.
 
-from holomj.export.writer import export_scene, prepare_output
-
-__all__ = ["export_scene", "prepare_output"]
+Writing them into an output folder is the jobs layer's (:mod:`holomj.jobs.folder`).
+"""

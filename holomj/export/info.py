@@ -1,17 +1,12 @@
-"""Summaries of scenes: counts, masses and sizes, for ``holomj info`` and the compile report."""
+"""Summaries of scenes and models: counts, masses and sizes (``holomj info``, compile report)."""
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Any
 
 import mujoco
 from shapely.geometry import Polygon
 
-from holomj.errors import FormatError
-from holomj.export.writer import SCENE_JSON, SCENE_XML
-from holomj.mjcf.loading import load_model_file
-from holomj.spec.base import read_json, validate_model
 from holomj.spec.scene import SceneSpec
 
 
@@ -44,16 +39,3 @@ def scene_summary(scene: SceneSpec) -> dict[str, Any]:
         "dynamic_objects": sum(1 for o in scene.objects if not o.static),
         "lights": len(scene.lights),
     }
-
-
-def folder_summary(out: Path) -> dict[str, Any]:
-    """Summary of an exported folder: its scene.json and the model loaded from its scene.xml."""
-    out = Path(out)
-    if not out.is_dir():
-        raise FormatError(
-            "not a folder (expected a folder written by 'holomj compile')", where=str(out)
-        )
-    scene_path = out / SCENE_JSON
-    scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
-    model = load_model_file(out / SCENE_XML)
-    return {"folder": str(out), **scene_summary(scene), "model": model_summary(model)}

@@ -12,7 +12,7 @@ from holomj.errors import CompileError, InputError
 from holomj.library.store import AssetLibrary, LibraryAsset
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.objects import Furniture, ObjectBuilder
-from holomj.mjcf.openings import add_openings, place_openings
+from holomj.mjcf.opening_geometry import add_openings, place_openings
 from holomj.mjcf.structure import add_floors_and_ceilings, add_ground, add_walls
 from holomj.mjcf.views import add_cameras, add_lights
 from holomj.spec.scene import SceneSpec

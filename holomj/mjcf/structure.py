@@ -11,7 +11,7 @@ import numpy as np
 from holomj.mjcf import names
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean, polygon_slab, yaw_quat
-from holomj.mjcf.openings import PlacedOpening
+from holomj.mjcf.opening_geometry import PlacedOpening
 from holomj.spec.walls import Wall
 
 FLOOR_THICKNESS = 0.02  # visual slab below z = 0

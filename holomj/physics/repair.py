@@ -11,33 +11,26 @@
    ``quat`` when it tilts more than 1°); unstable ones and those too deep to separate keep
    their pose and are reported as unsaved. No object is ever deleted, and no pose that fails
    the rule (a toppled lamp, a box that slid away) is ever written as settled.
-4. **Re-export** the folder atomically from the new scene, with a keyframe ``settled`` in
-   ``scene.xml`` holding the joint positions the simulation settled to, except those of the
-   unsaved objects, which keep their authored pose there too; other files in the folder
-   (reports, renders) are carried over.
+4. **Recompile** the new scene with a keyframe ``settled`` holding the joint positions the
+   simulation settled to, except those of the unsaved objects, which keep their authored pose
+   there too. Writing it back into its folder is the jobs layer's (``holomj.jobs.validate``).
 """
 
 from __future__ import annotations
 
 import math
-import os
-import shutil
-import tempfile
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import mujoco
 import numpy as np
 
-from holomj.atomic import replace_folder
 from holomj.errors import InputError
-from holomj.export.writer import export_scene
-from holomj.mjcf.compiler import CompiledScene, compile_scene
+from holomj.mjcf.compiler import CompiledScene
 from holomj.mjcf.objects import Furniture
 from holomj.physics.audit import GeomOwners, find_overlaps
-from holomj.physics.scene_io import LoadedScene, load_scene
+from holomj.physics.scene_io import LoadedScene
 from holomj.physics.settle import ObjectTrack, Validation, run_validation
-from holomj.robots.attach import attach_saved_robot
 from holomj.spec.report import RepairAction, Thresholds, Unsaved
 from holomj.spec.scene import SceneObject, SceneSpec
 
@@ -48,35 +41,41 @@ TILT_DEG = 1.0  # below this tilt a settled pose is baked as a yaw
 
 @dataclass
 class RepairOutcome:
-    """What ``--repair`` did to the folder."""
+    """What ``--repair`` made of a scene: the recompiled scene (with its ``settled`` keyframe),
+    every object it moved and every object it could not save."""
 
-    folder: Path
-    scene: SceneSpec
+    compiled: CompiledScene
     repaired: list[RepairAction] = field(default_factory=list)
     unsaved: list[Unsaved] = field(default_factory=list)
 
+    @property
+    def scene(self) -> SceneSpec:
+        """The repaired scene."""
+        return self.compiled.scene
 
-def repair_folder(
-    path: Path,
+
+Recompile = Callable[[SceneSpec, Furniture], CompiledScene]
+
+
+def repair_scene(
+    loaded: LoadedScene,
+    recompile: Recompile,
     thresholds: Thresholds | None = None,
     furniture: Furniture = "free",
     sleep: bool = False,
 ) -> RepairOutcome:
-    """Repair the holomj folder at ``path`` in place (see the module docstring)."""
+    """Repair the holomj scene of ``loaded`` (see the module docstring). ``recompile(scene,
+    furniture)`` compiles a scene the way ``loaded`` was (its library, its robot)."""
     th = thresholds or Thresholds()
-    loaded = load_scene(Path(path), furniture=furniture)
-    if loaded.folder is None or loaded.scene is None or loaded.library is None:
+    if loaded.scene is None or loaded.library is None:
         raise InputError(
-            "--repair needs a holomj scene folder (scene.json and assets/)",
-            where=str(path),
+            "--repair needs a holomj scene (scene.json and assets/)",
+            where=str(loaded.source),
             fix="validate without --repair, or compile the scene with 'holomj compile'",
         )
     original = loaded.scene
     separated, why, unsaved = separate(loaded, th)
-    # The folder's robot (if any) is part of the scene being repaired and of what is written back.
-    compiled = attach_saved_robot(
-        compile_scene(separated, loaded.library, furniture=furniture), loaded.folder
-    )
+    compiled = recompile(separated, furniture)
     objects = {o.id: compiled.model.body(f"{o.id}/body").id for o in separated.objects}
     settled_scene = LoadedScene(
         loaded.source, compiled.model, objects, separated, loaded.library, compiled, loaded.folder
@@ -88,12 +87,11 @@ def repair_folder(
         for o in validation.report.objects
         if o.name in unstable and o.name not in {u.name for u in unsaved}
     ]
-    final = attach_saved_robot(compile_scene(baked, loaded.library), loaded.folder)
+    final = recompile(baked, "as-is")
     unsaved_names = {u.name for u in unsaved}
     add_settled_key(final, compiled.model, validation.result.data, skip=unsaved_names)
-    write_folder(final, loaded.folder)
     repaired = moves(original, baked, why)
-    return RepairOutcome(loaded.folder, baked, repaired, sorted(unsaved, key=lambda u: u.name))
+    return RepairOutcome(final, repaired, sorted(unsaved, key=lambda u: u.name))
 
 
 def separate(loaded: LoadedScene, th: Thresholds) -> tuple[SceneSpec, dict[str, str], list]:
@@ -283,31 +281,6 @@ def _qpos_width(kind: int) -> int:
         mujoco.mjtJoint.mjJNT_FREE: 7,
         mujoco.mjtJoint.mjJNT_BALL: 4,
     }.get(mujoco.mjtJoint(kind), 1)
-
-
-def write_folder(compiled: CompiledScene, folder: Path) -> None:
-    """Re-export ``folder`` atomically, keeping the other files (reports, renders) that the
-    export does not write afresh."""
-    folder = Path(folder).absolute()
-    staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.repair-", dir=folder.parent))
-    try:
-        fresh = export_scene(compiled, staging / "out")
-        for item in sorted(folder.iterdir()):
-            target = fresh / item.name
-            if target.exists():  # written afresh by the export (scene, assets, objects, navmap)
-                continue
-            if item.is_dir():
-                shutil.copytree(item, target, symlinks=True)
-            else:
-                shutil.copy2(item, target, follow_symlinks=False)
-
-        def fill(tmp: Path) -> None:
-            for item in sorted(fresh.iterdir()):
-                os.replace(item, tmp / item.name)
-
-        replace_folder(folder, fill)
-    finally:
-        shutil.rmtree(staging, ignore_errors=True)
 
 
 def moves(before: SceneSpec, after: SceneSpec, why: dict[str, str]) -> list[RepairAction]:

@@ -25,13 +25,12 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
-from pathlib import Path
 
 import mujoco
 import numpy as np
 
 from holomj.physics.audit import AuditResult, GeomOwners, Rooms, audit, lowest_points
-from holomj.physics.scene_io import LoadedScene, load_scene
+from holomj.physics.scene_io import LoadedScene
 from holomj.physics.smoke import warning_counts
 from holomj.spec.report import ObjectReport, StabilityReport, Thresholds
 
@@ -457,14 +456,3 @@ def assemble(
         monitor_s=th.monitor_s,
         thresholds=th,
     )
-
-
-def validate_path(
-    path: Path,
-    thresholds: Thresholds | None = None,
-    furniture: str = "free",
-    sleep: bool = False,
-) -> StabilityReport:
-    """Load ``path`` (a holomj folder or an MJCF file) and validate it."""
-    loaded = load_scene(Path(path), furniture=furniture)  # type: ignore[arg-type]
-    return validate_loaded(loaded, thresholds, furniture, sleep)

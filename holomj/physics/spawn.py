@@ -141,7 +141,7 @@ def populate(
 
     ``nthread`` worker threads drop candidates in parallel (default :func:`default_threads`);
     the result does not depend on it. ``attach`` adds what the scene carries besides its
-    objects (a folder's robot, see :func:`holomj.robots.attach.attach_saved_robot`) to the
+    objects (a folder's robot, see :func:`holomj.jobs.folder.attach_folder_robot`) to the
     compiled world, so candidates are spawned clear of it and dropped against it.
 
     ``library`` must hold the scene's assets and the requested ones (see

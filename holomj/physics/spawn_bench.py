@@ -10,10 +10,9 @@ from __future__ import annotations
 import time
 from typing import Any
 
-import numpy as np
-
 from holomj.library.store import AssetLibrary
 from holomj.physics.spawn import populate
+from holomj.seeds import seed_rng
 from holomj.spec.scene import Room, SceneObject, SceneSpec
 
 BENCH_CATEGORIES = (
@@ -81,7 +80,7 @@ def bench_populate(
             library,
             "receptacle",
             bench_requests(n),
-            np.random.default_rng(seed),
+            seed_rng(seed),
             nthread=nthread,
         )
         seconds = time.perf_counter() - start

@@ -36,7 +36,6 @@ from __future__ import annotations
 import numpy as np
 
 from holomj.errors import InputError
-from holomj.generate.seeds import stage_rng
 from holomj.plan.constraints_text import constraint_lines
 from holomj.plan.draft import MAX_QUANTITY, DraftObject, DraftPlan, DraftRoom
 from holomj.plan.fit import ESSENTIAL, fit_room
@@ -54,6 +53,7 @@ from holomj.plan.rooms import (
 )
 from holomj.plan.scene_match import HOME_SCENE, OBJECT_MATCH_MIN, choose_scene
 from holomj.retrieval.text import TextEncoder
+from holomj.seeds import stage_rng
 from holomj.spec.plan import PlanObject, PlanRoom, PlanSmallObject, PlanWindows, ScenePlan
 
 MAX_PROMPT_CHARS = 2000

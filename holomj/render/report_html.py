@@ -22,7 +22,7 @@ from typing import Any
 
 from holomj import __version__
 from holomj.errors import ExportError
-from holomj.export.writer import ASSETS_DIR
+from holomj.jobs.folder import ASSETS_DIR
 from holomj.library.store import AssetLibrary
 from holomj.render.folder import MANIFEST, RENDERS_DIR
 from holomj.render.source import read_scene

@@ -16,7 +16,7 @@ import numpy as np
 from shapely.geometry import MultiPoint, Polygon
 
 from holomj.errors import FormatError
-from holomj.export.writer import ASSETS_DIR, SCENE_JSON, SCENE_XML
+from holomj.jobs.folder import ASSETS_DIR, SCENE_JSON, SCENE_XML
 from holomj.mjcf import names
 from holomj.mjcf.geometry import look_at_quat
 from holomj.render.cameras import CameraPose, Mass

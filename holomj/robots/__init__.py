@@ -3,11 +3,11 @@
 - :mod:`registry`: ``panda`` / ``jaco`` / an MJCF path -> :class:`RobotSource`
 - :mod:`prepare`: fixed base, home pose as ``qpos0``, files embedded, footprint
 - :mod:`occupancy`, :mod:`reach`, :mod:`placement`: floor grid, reachability, the spot
-- :mod:`attach`: put it into a compiled scene (``robot.json`` to put it back on recompile)
-- :mod:`folder`: ``holomj add-robot OUT SPEC``
+- :mod:`attach`: put it into a compiled scene; put a recorded robot back on a recompile
+  (``holomj add-robot`` is the job :mod:`holomj.jobs.add_robot`)
 """
 
-from holomj.robots.attach import add_robot, attach_saved_robot, read_robot_record
+from holomj.robots.attach import add_robot, attach_recorded, reattach_robot
 from holomj.robots.placement import Spot, choose_spot
 from holomj.robots.prepare import PreparedRobot, prepare_robot
 from holomj.robots.records import Footprint, RobotRecord
@@ -20,10 +20,10 @@ __all__ = [
     "RobotSource",
     "Spot",
     "add_robot",
-    "attach_saved_robot",
+    "attach_recorded",
     "available_robots",
     "choose_spot",
     "prepare_robot",
-    "read_robot_record",
+    "reattach_robot",
     "resolve_robot",
 ]

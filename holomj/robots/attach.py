@@ -1,23 +1,22 @@
 """Attach a robot to a compiled scene: choose its spot, put it there, recompile, check it.
 
 The robot goes under the prefix ``robot/``, inside a static mount body ``robot/base_mount`` at
-its spot (so the XML holds no ``<frame>``), with its files under ``assets/robot/`` and its
-prepared MJCF as ``assets/robot.xml``; :class:`~holomj.robots.records.RobotRecord` (written as
-``robot.json``) says where it stands, so :func:`attach_saved_robot` can put it back when a
-folder is recompiled from its ``scene.json``.
+its spot (so the XML holds no ``<frame>``), with its files among the scene's asset files under
+``robot/`` and its prepared MJCF as ``robot.xml``; :class:`~holomj.robots.records.RobotRecord`
+says where it stands, so :func:`attach_recorded` can put it back when the scene is recompiled
+(the jobs layer reads it from a folder's ``robot.json``) and :func:`reattach_robot` can carry
+it over to another compile of the scene in memory.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from pathlib import Path
 
 import mujoco
 import numpy as np
 
 from holomj.errors import CompileError, FormatError, HolomjError, InputError, SpecError
-from holomj.export.writer import ASSETS_DIR
 from holomj.mjcf.compiler import CompiledScene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.physics.bounds import world_aabbs
@@ -25,9 +24,8 @@ from holomj.robots.occupancy import build_floor_grid
 from holomj.robots.placement import DEFAULT_CLEARANCE_M, Spot, choose_spot
 from holomj.robots.prepare import PreparedRobot, prepare_robot
 from holomj.robots.reach import compute_reach
-from holomj.robots.records import ROBOT_JSON, ROBOT_PREFIX, ROBOT_XML, RobotRecord
+from holomj.robots.records import ROBOT_PREFIX, ROBOT_XML, RobotRecord
 from holomj.robots.registry import RobotSource, resolve_robot
-from holomj.spec.base import read_json, validate_model
 
 MOUNT_BODY = f"{ROBOT_PREFIX}base_mount"
 PENETRATION_TOLERANCE_M = 0.001
@@ -63,7 +61,6 @@ def place_robot(prepared: PreparedRobot, spot: Spot) -> RobotRecord:
         name=prepared.source.name,
         source=_source_label(prepared.source),
         package=prepared.source.package,
-        xml=f"{ASSETS_DIR}/{ROBOT_XML}",
         position=(spot.x, spot.y, 0.0),
         yaw_deg=spot.yaw_deg,
         room=spot.room,
@@ -182,36 +179,6 @@ def _source_label(source: RobotSource) -> str:
     return str(source.xml)
 
 
-def read_robot_record(folder: Path) -> RobotRecord | None:
-    """``folder/robot.json``, or None when the folder has no robot."""
-    path = Path(folder) / ROBOT_JSON
-    if not path.is_file():
-        return None
-    return validate_model(RobotRecord, read_json(path), str(path))
-
-
-def attach_saved_robot(compiled: CompiledScene, folder: Path) -> CompiledScene:
-    """Put back the robot a folder was exported with (``robot.json`` + ``assets/robot.xml``);
-    ``compiled`` unchanged when the folder has none."""
-    record = read_robot_record(folder)
-    if record is None:
-        return compiled
-    assets = Path(folder) / ASSETS_DIR
-    xml_path = Path(folder) / record.xml
-    try:
-        xml = xml_path.read_text(encoding="utf-8")
-    except OSError as err:
-        raise FormatError(
-            f"cannot read the robot MJCF: {err.strerror or err}", where=str(xml_path)
-        ) from None
-    files = {
-        path.relative_to(assets).as_posix(): path.read_bytes()
-        for path in sorted((assets / "robot").rglob("*"))
-        if path.is_file()
-    }
-    return _attach_recorded(compiled, record, xml, files, str(xml_path))
-
-
 def reattach_robot(target: CompiledScene, source: CompiledScene) -> CompiledScene:
     """``target`` (the same scene compiled otherwise, e.g. with static furniture) with the robot
     that ``source`` carries, at the same spot, from ``source``'s files in memory; ``target``
@@ -220,12 +187,19 @@ def reattach_robot(target: CompiledScene, source: CompiledScene) -> CompiledScen
         return target
     xml = source.files[ROBOT_XML].decode("utf-8")
     files = {k: v for k, v in source.files.items() if k.startswith("robot/")}
-    return _attach_recorded(target, source.robot, xml, files, ROBOT_XML)
+    return attach_recorded(target, source.robot, xml, files, where=ROBOT_XML)
 
 
-def _attach_recorded(
-    compiled: CompiledScene, record: RobotRecord, xml: str, files: dict[str, bytes], where: str
+def attach_recorded(
+    compiled: CompiledScene,
+    record: RobotRecord,
+    xml: str,
+    files: dict[str, bytes],
+    *,
+    where: str = ROBOT_XML,
 ) -> CompiledScene:
+    """``compiled`` with the robot of ``record`` (its prepared MJCF ``xml`` and ``files``, keyed
+    as among the scene's assets) attached where the record says."""
     try:
         robot = mujoco.MjSpec.from_string(xml, assets=files)
     except ValueError as err:

@@ -1,4 +1,5 @@
-"""Pure data about an attached robot: its footprint and ``robot.json``."""
+"""Pure data about an attached robot: its footprint and its record (``robot.json`` in a scene
+folder)."""
 
 from __future__ import annotations
 
@@ -9,8 +10,7 @@ from pydantic import Field
 from holomj.spec.base import FrozenModel, PositiveFloat, Vec2, Vec3
 
 ROBOT_SCHEMA_VERSION = "1.0"
-ROBOT_JSON = "robot.json"
-ROBOT_XML = "robot.xml"  # the prepared robot MJCF, under assets/
+ROBOT_XML = "robot.xml"  # the prepared robot MJCF: its key among the scene's asset files
 ROBOT_PREFIX = "robot/"
 
 
@@ -29,14 +29,17 @@ class Footprint(FrozenModel):
 
 
 class RobotRecord(FrozenModel):
-    """``robot.json``: which robot stands where, so the folder can be recompiled with it."""
+    """Which robot stands where, so a scene can be recompiled with it (``robot.json``)."""
 
     schema_version: Literal["1.0"] = ROBOT_SCHEMA_VERSION
     spec: str = Field(description="The robot as the user named it (registry name or path).")
     name: str
     source: str = Field(description="The MJCF it was read from, at export time.")
     package: str | None = Field(default=None, description="Installed package it came from.")
-    xml: str = Field(description="The prepared robot MJCF inside the folder.")
+    xml: str = Field(
+        default=f"assets/{ROBOT_XML}",
+        description="The prepared robot MJCF inside the scene folder (among its assets).",
+    )
     prefix: str = ROBOT_PREFIX
     position: Vec3
     yaw_deg: float

@@ -12,8 +12,8 @@ import os
 import time
 from pathlib import Path
 
-from holomj.batch.files import write_text_atomic
-from holomj.batch.jobs import Job
+from holomj.atomic import write_file
+from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult
 from holomj.batch.resume import MARKER, job_folder
 from holomj.errors import InputError
@@ -50,5 +50,5 @@ def fake_job(job: Job, out_dir: Path, options: JobOptions) -> JobResult:
         seconds=0.01,
         output=job.id,
     )
-    write_text_atomic(folder / MARKER, result.model_dump_json())
+    write_file(folder / MARKER, result.model_dump_json())
     return result

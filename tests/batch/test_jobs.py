@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from holomj.batch.jobs import MAX_PROMPT_CHARS, job_id, parse_seeds, read_jobs
+from holomj.batch.job_list import MAX_PROMPT_CHARS, job_id, parse_seeds, read_jobs
 from holomj.errors import InputError
-from holomj.generate import runner
+from holomj.jobs import generate as runner
 
 
 def write(path: Path, text: str) -> Path:

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from holomj.batch.jobs import Job, job_id
+from holomj.batch.job_list import Job, job_id
 from holomj.batch.local import LocalEngine
 from holomj.batch.ray_engine import import_ray
 from holomj.batch.result import JobOptions

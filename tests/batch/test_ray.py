@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from holomj.batch.jobs import Job, job_id
+from holomj.batch.job_list import Job, job_id
 from holomj.batch.ray_engine import RayEngine
 from holomj.batch.result import JobOptions
 from holomj.batch.resume import MARKER

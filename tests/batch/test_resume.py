@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from holomj.batch.jobs import Job
+from holomj.batch.job_list import Job
 from holomj.batch.result import JobResult, failed_result
 from holomj.batch.resume import (
     MARKER,

@@ -11,8 +11,8 @@ from dm_control import composer
 from dm_control.entities.manipulators.kinova import jaco_arm, jaco_hand
 
 from holomj.errors import FormatError
-from holomj.export import export_scene
-from holomj.export.dm_control_arena import HolomjArena
+from holomj.jobs.arena import HolomjArena
+from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.robots.attach import add_robot
@@ -43,7 +43,7 @@ class _Hold(composer.Task):
 @pytest.fixture
 def folder(two_room_scene: SceneSpec, empty_library: AssetLibrary, tmp_path: Path) -> Path:
     compiled = compile_scene(two_room_scene, empty_library)
-    return export_scene(compiled, tmp_path / "out")
+    return write_scene_folder(compiled, tmp_path / "out")
 
 
 def test_environment_with_a_jaco_steps(folder: Path) -> None:
@@ -77,7 +77,7 @@ def test_arena_of_a_folder_with_a_robot(
     compiled = add_robot(
         compile_scene(two_room_scene, empty_library), "jaco", np.random.default_rng(0)
     )
-    folder = export_scene(compiled, tmp_path / "robot")
+    folder = write_scene_folder(compiled, tmp_path / "robot")
     arena = HolomjArena(folder, name="house")
     assert arena.mjcf_model.model == "house"
     assert arena.robot_record == compiled.robot

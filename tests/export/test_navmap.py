@@ -11,8 +11,8 @@ import pytest
 from PIL import Image
 
 from holomj.errors import FormatError
-from holomj.export import export_scene
 from holomj.export.navmap import CODES, build_navmap, rle_decode, rle_encode
+from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.spec.scene import SceneSpec
@@ -91,7 +91,7 @@ def test_png_matches_the_grid(compiled) -> None:
 
 
 def test_every_export_writes_the_navmap(compiled, tmp_path: Path) -> None:
-    out = export_scene(compiled, tmp_path / "out")
+    out = write_scene_folder(compiled, tmp_path / "out")
     data = json.loads((out / "navmap.json").read_text())
     assert data["image"] == "navmap.png" and (out / "navmap.png").is_file()
     assert "robot" not in data

@@ -10,8 +10,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from holomj.export import export_scene
 from holomj.export.objects_json import objects_record
+from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.robots.attach import add_robot
@@ -68,7 +68,7 @@ def test_doors(compiled) -> None:
 def test_robot_and_export(compiled, tmp_path: Path) -> None:
     assert objects_record(compiled)["robot"] is None
     with_robot = add_robot(compiled, "jaco", np.random.default_rng(0))
-    out = export_scene(with_robot, tmp_path / "out")
+    out = write_scene_folder(with_robot, tmp_path / "out")
     record = json.loads((out / "objects.json").read_text())
     robot = record["robot"]
     assert robot["name"] == "jaco" and robot["base_body"] == "robot/base_mount"

@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from shapely.geometry import Polygon
 
 from holomj.errors import SpecError
+from holomj.layout.door_window_placement import place_doors, place_windows, reachable
 from holomj.layout.floorplan import (
     DOOR_SPAN_M,
     RoomRequest,
@@ -20,7 +21,6 @@ from holomj.layout.floorplan import (
     shared_edge_length,
     validate_floor,
 )
-from holomj.layout.openings import place_doors, place_windows, reachable
 from holomj.spec.scene import Room, SceneSpec
 from holomj.spec.walls import derive_walls, find_wall_for_opening
 

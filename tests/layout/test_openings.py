@@ -13,8 +13,7 @@ from shapely.affinity import rotate, translate
 from shapely.geometry import Polygon, box
 
 from holomj.errors import SpecError
-from holomj.layout.floorplan import RoomRequest, plan_floor
-from holomj.layout.openings import (
+from holomj.layout.door_window_placement import (
     WINDOW_BASE_HEIGHT_M,
     WINDOW_SIZES_CM,
     WindowRequest,
@@ -24,6 +23,7 @@ from holomj.layout.openings import (
     reachable,
     window_sizes_m,
 )
+from holomj.layout.floorplan import RoomRequest, plan_floor
 from holomj.layout.wall_objects import WallObjectRequest, ceiling_lights, place_wall_objects
 from holomj.mjcf import compile_scene, names
 from holomj.physics.audit import audit

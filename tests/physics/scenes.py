@@ -8,7 +8,7 @@ from pathlib import Path
 import trimesh
 
 from asset_pipeline.library_writer import AssetBundle, write_library
-from holomj.export import export_scene
+from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.spec.assets import AssetMeta
@@ -41,7 +41,7 @@ def export(
     scene: SceneSpec, library: AssetLibrary, out: Path, extra_json: dict | None = None
 ) -> Path:
     """Compile ``scene`` and export it to ``out`` (with extra JSON files); returns ``out``."""
-    return export_scene(compile_scene(scene, library), out, extra_json=extra_json)
+    return write_scene_folder(compile_scene(scene, library), out, extra_json=extra_json)
 
 
 def _primitive_mesh(part: dict) -> trimesh.Trimesh:

@@ -8,11 +8,11 @@ from pathlib import Path
 import mujoco
 import pytest
 
+from holomj.jobs.folder import load_for_physics
+from holomj.jobs.validate import repair_folder, validate
 from holomj.library import AssetLibrary
 from holomj.physics.audit import audit
-from holomj.physics.repair import SETTLED_KEY, repair_folder
-from holomj.physics.scene_io import load_scene
-from holomj.physics.settle import validate_path
+from holomj.physics.repair import SETTLED_KEY
 from tests.physics.scenes import FAST, box, export, make_scene
 
 
@@ -32,14 +32,14 @@ def test_repair_fixes_five_millimetre_overlaps(empty_library: AssetLibrary, tmp_
     )
     folder = export(scene, empty_library, tmp_path / "sunk", {"import_report.json": {"kept": True}})
     (folder / "notes.txt").write_text("kept too")
-    before = audit(load_scene(folder))
+    before = audit(load_for_physics(folder))
     assert len(before.penetrations) == 3 and [d.name for d in before.below_floor] == ["base"]
 
-    outcome = repair_folder(folder, FAST)
+    outcome = repair_folder(folder, thresholds=FAST)
 
-    after = audit(load_scene(folder))
+    after = audit(load_for_physics(folder))
     assert after.ok, after.penetrations
-    report = validate_path(folder, FAST)
+    report = validate(folder, thresholds=FAST)
     assert report.ok, [o.reasons for o in report.objects]
     positions = _positions(folder)
     # base rises 5 mm (minus the contact's rest depth); top rides along and loses its own 5 mm.
@@ -71,7 +71,7 @@ def test_deep_penetration_is_unsaved_and_nothing_is_deleted(
         ]
     )
     folder = export(scene, empty_library, tmp_path / "deep")
-    outcome = repair_folder(folder, FAST)
+    outcome = repair_folder(folder, thresholds=FAST)
     # Both parties of the pair are in a penetration (rule (c)); only the free one could move.
     assert [u.name for u in outcome.unsaved] == ["block", "buried"]
     assert all("80.0 mm" in u.why for u in outcome.unsaved)

@@ -7,11 +7,11 @@ from pathlib import Path
 
 import pytest
 
+from holomj.jobs.folder import load_for_physics
+from holomj.jobs.validate import validate
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.physics.audit import audit
-from holomj.physics.scene_io import load_scene
-from holomj.physics.settle import validate_path
 from holomj.spec.report import StabilityReport
 from holomj.spec.scene import SceneSpec
 from tests.physics.scenes import FAST, box, export, make_scene, sphere_library
@@ -25,7 +25,7 @@ def test_two_room_scene_is_stable(
     two_room_scene: SceneSpec, empty_library: AssetLibrary, tmp_path: Path
 ) -> None:
     folder = export(two_room_scene, empty_library, tmp_path / "two_rooms")
-    report = validate_path(folder, furniture="free")
+    report = validate(folder, furniture="free")
     assert report.ok, [o.reasons for o in report.objects]
     assert {o.name for o in report.objects} == {o.id for o in two_room_scene.objects}
     assert report.penetrations == [] and report.below_floor == [] and report.outside_rooms == []
@@ -47,7 +47,9 @@ def test_leaning_tower_falls(empty_library: AssetLibrary, tmp_path: Path) -> Non
         objects.append(
             box(f"b{level}", (3 + 0.08 * level, 3, 0.2 * level), (0.2, 0.2, 0.2), **support)
         )
-    report = validate_path(export(make_scene(objects), empty_library, tmp_path / "tower"), FAST)
+    report = validate(
+        export(make_scene(objects), empty_library, tmp_path / "tower"), thresholds=FAST
+    )
     assert not report.ok
     top = _object(report, "b3")
     assert not top.stable and top.fell
@@ -57,7 +59,7 @@ def test_leaning_tower_falls(empty_library: AssetLibrary, tmp_path: Path) -> Non
 
 def test_floating_box_falls(empty_library: AssetLibrary, tmp_path: Path) -> None:
     scene = make_scene([box("floater", (3, 3, 0.3), (0.2, 0.2, 0.2))])
-    report = validate_path(export(scene, empty_library, tmp_path / "float"), FAST)
+    report = validate(export(scene, empty_library, tmp_path / "float"), thresholds=FAST)
     floater = _object(report, "floater")
     assert not report.ok and not floater.stable and floater.fell
     assert floater.drop_m == pytest.approx(0.3, abs=0.01)
@@ -68,7 +70,7 @@ def test_interpenetrating_boxes_are_reported(empty_library: AssetLibrary, tmp_pa
     scene = make_scene(
         [box("left", (2.0, 3, 0), (0.4, 0.4, 0.4)), box("right", (2.37, 3, 0), (0.4, 0.4, 0.4))]
     )
-    report = validate_path(export(scene, empty_library, tmp_path / "overlap"), FAST)
+    report = validate(export(scene, empty_library, tmp_path / "overlap"), thresholds=FAST)
     assert not report.ok
     assert len(report.penetrations) == 1
     pair = report.penetrations[0]
@@ -87,7 +89,7 @@ def test_static_pairs_and_floor_are_audited(empty_library: AssetLibrary, tmp_pat
             box("outside", (7.0, 3, 0), (0.2, 0.2, 0.2)),
         ]
     )
-    found = audit(load_scene(export(scene, empty_library, tmp_path / "statics")))
+    found = audit(load_for_physics(export(scene, empty_library, tmp_path / "statics")))
     pairs = {(p.a, p.b): p.depth_m for p in found.penetrations}
     assert pairs[("shelf_a", "shelf_b")] == pytest.approx(0.02, abs=1e-6)
     assert pairs[("sunk", "floor")] == pytest.approx(0.004, abs=1e-6)
@@ -107,7 +109,7 @@ def test_box_hanging_off_a_table_edge_falls(empty_library: AssetLibrary, tmp_pat
             box("plank", (3.58, 3, 0.75), (0.3, 0.1, 0.05), support="table"),
         ]
     )
-    report = validate_path(export(scene, empty_library, tmp_path / "edge"), FAST)
+    report = validate(export(scene, empty_library, tmp_path / "edge"), thresholds=FAST)
     plank = _object(report, "plank")
     assert not report.ok and not plank.stable
     assert plank.fell and plank.support != "table"
@@ -134,9 +136,9 @@ def test_sphere_on_a_slope_rolls_away(tmp_path: Path) -> None:
         ]
     )
     folder = export(scene, library, tmp_path / "slope")
-    found = audit(load_scene(folder))
+    found = audit(load_for_physics(folder))
     assert found.penetrations == []  # it starts just touching
-    report = validate_path(folder, FAST)
+    report = validate(folder, thresholds=FAST)
     ball = _object(report, "ball")
     assert not report.ok and not ball.stable
     assert ball.fell and ball.support != "slope"
@@ -160,8 +162,8 @@ def test_validation_is_deterministic(
     scene = SceneSpec.model_validate({**two_room_scene.model_dump(), "objects": objects})
     folder = export(scene, empty_library, tmp_path / "det")
     timing = {"wall_time_s", "realtime_factor"}
-    first = validate_path(folder, FAST).model_dump(exclude=timing)
-    again = validate_path(folder, FAST).model_dump(exclude=timing)
+    first = validate(folder, thresholds=FAST).model_dump(exclude=timing)
+    again = validate(folder, thresholds=FAST).model_dump(exclude=timing)
     assert first == again
     assert next(o for o in first["objects"] if o["name"] == "faller")["fell"]
 
@@ -176,7 +178,7 @@ def test_foreign_mjcf(tmp_path: Path) -> None:
               group="2"/>
         </worldbody></mujoco>"""
     )
-    report = validate_path(path, FAST)
+    report = validate(path, thresholds=FAST)
     assert {o.name for o in report.objects} == {"resting", "dropped"}
     resting = next(o for o in report.objects if o.name == "resting")
     assert resting.stable and resting.expected_support is None and resting.support == "floor"
@@ -198,8 +200,8 @@ def test_static_furniture_option(default_library: AssetLibrary, tmp_path: Path) 
         ]
     )
     folder = export(scene, default_library, tmp_path / "furniture")
-    static = validate_path(folder, FAST, furniture="static")
-    free = validate_path(folder, FAST, furniture="free")
+    static = validate(folder, thresholds=FAST, furniture="static")
+    free = validate(folder, thresholds=FAST, furniture="free")
     assert static.ok and free.ok, (static.objects, free.objects)
     assert not _object(static, "table").dynamic and _object(free, "table").dynamic
     assert _object(free, "mug").support == "table"
@@ -217,8 +219,8 @@ def test_sleeping_gives_the_same_verdicts(empty_library: AssetLibrary, tmp_path:
         ]
     )
     folder = export(scene, empty_library, tmp_path / "sleep")
-    awake = validate_path(folder, FAST)
-    asleep = validate_path(folder, FAST, sleep=True)
+    awake = validate(folder, thresholds=FAST)
+    asleep = validate(folder, thresholds=FAST, sleep=True)
     for a, b in zip(awake.objects, asleep.objects):
         assert (a.name, a.stable, a.fell, a.support) == (b.name, b.stable, b.fell, b.support)
     assert [o.stable for o in asleep.objects] == [True, True, False]

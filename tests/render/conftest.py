@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from holomj.pipeline import compile_file
+from holomj.jobs.compile import compile_file
 from holomj.render import RenderSummary, render_folder
 from tests.conftest import FIXTURES
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from holomj.errors import HolomjError, InputError
-from holomj.export import export_scene
+from holomj.jobs.folder import attach_folder_robot, read_robot, write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.mjcf.compiler import CompiledScene
@@ -20,9 +20,7 @@ from holomj.robots.attach import (
     MOUNT_BODY,
     add_robot,
     attach_prepared,
-    attach_saved_robot,
     place_robot,
-    read_robot_record,
     reattach_robot,
 )
 from holomj.robots.placement import Spot
@@ -91,8 +89,8 @@ def test_one_robot_per_scene(with_jaco: CompiledScene) -> None:
 
 
 def test_export_and_reattach(with_jaco: CompiledScene, tmp_path: Path) -> None:
-    out = export_scene(with_jaco, tmp_path / "out")
-    record = read_robot_record(out)
+    out = write_scene_folder(with_jaco, tmp_path / "out")
+    record = read_robot(out)
     assert record == with_jaco.robot
     assert json.loads((out / "robot.json").read_text())["xml"] == "assets/robot.xml"
     assert (out / "assets" / "robot.xml").is_file()
@@ -109,11 +107,11 @@ def test_export_and_reattach(with_jaco: CompiledScene, tmp_path: Path) -> None:
     # Recompiling the folder from scene.json puts the robot back where it was.
     library = AssetLibrary.open(out / "assets")
     bare = compile_scene(read_scene_file(out / "scene.json"), library)
-    again = attach_saved_robot(bare, out)
+    again = attach_folder_robot(bare, out)
     assert again.robot == record
     np.testing.assert_allclose(again.model.body_pos, with_jaco.model.body_pos, atol=1e-9)
     np.testing.assert_allclose(again.model.qpos0, with_jaco.model.qpos0, atol=1e-9)
-    assert attach_saved_robot(bare, tmp_path) is bare  # no robot.json: unchanged
+    assert attach_folder_robot(bare, tmp_path) is bare  # no robot.json: unchanged
 
 
 def test_a_robot_inside_furniture_is_refused(two_room_compiled: CompiledScene, jaco) -> None:
@@ -153,19 +151,18 @@ def test_attaching_leaves_the_prepared_robot_usable(two_room_compiled: CompiledS
 
 
 def test_validate_and_repair_keep_the_robot(with_jaco: CompiledScene, tmp_path: Path) -> None:
-    from holomj.physics.repair import repair_folder
-    from holomj.physics.settle import validate_path
+    from holomj.jobs.validate import repair_folder, validate
 
-    out = export_scene(with_jaco, tmp_path / "out")
+    out = write_scene_folder(with_jaco, tmp_path / "out")
     (out / "notes.txt").write_text("kept")
     stale = json.loads((out / "objects.json").read_text())
-    report = validate_path(out, furniture="as-is")
+    report = validate(out, furniture="as-is")
     assert report.ok
     outcome = repair_folder(out, furniture="as-is")
     assert not outcome.unsaved
     model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
     assert model.nbody == with_jaco.model.nbody  # the robot is still there
-    assert read_robot_record(out) == with_jaco.robot
+    assert read_robot(out) == with_jaco.robot
     assert (out / "assets" / "robot.xml").is_file()
     assert (out / "notes.txt").read_text() == "kept"
     # objects.json is written afresh from the repaired scene, not copied from before

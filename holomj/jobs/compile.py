@@ -1,4 +1,9 @@
-"""Library entry points that the CLI calls: one function per user-facing job."""
+"""The compile job: any supported scene input -> a validated-to-load MJCF folder.
+
+``compile_file`` imports the input (holomj ``scene.json``, ProcTHOR/Holodeck house, 3D-Generalist
+SceneDef), compiles it, optionally attaches a robot, runs a short smoke simulation for MuJoCo
+warnings and writes the folder atomically with ``import_report.json``.
+"""
 
 from __future__ import annotations
 
@@ -8,12 +13,10 @@ from pathlib import Path
 from typing import Any
 
 from holomj.export.info import model_summary, scene_summary
-from holomj.export.writer import export_scene, prepare_output
+from holomj.jobs.folder import IMPORT_REPORT, prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import check_profile, compile_scene
 from holomj.physics.smoke import simulate
-
-IMPORT_REPORT = "import_report.json"
 
 
 @dataclass
@@ -50,6 +53,11 @@ def compile_file(
 ) -> CompileReport:
     """Import ``input_path`` (any supported format), compile it and export it to ``out``.
 
+    Raises :class:`~holomj.errors.OutputExistsError` when ``out`` exists (unless
+    ``overwrite``), :class:`~holomj.errors.FormatError` / :class:`~holomj.errors.SpecError` for
+    bad input (naming the file and field), :class:`~holomj.errors.AssetNotFoundError` for an
+    asset the library lacks, :class:`~holomj.errors.CompileError` when MuJoCo rejects it.
+
     ``check_seconds`` of simulation run after compiling (0 to skip); MuJoCo warnings it raises
     are listed in the report and in ``import_report.json``. ``robot`` (a registry name or an
     MJCF path) is attached on a free floor spot drawn with ``seed``; ``profile`` is the compile
@@ -68,8 +76,8 @@ def compile_file(
     compiled = compile_scene(result.scene, library, profile=checked_profile)
     timings["compile"] = time.perf_counter() - start
     if robot is not None:
-        from holomj.generate.seeds import stage_rng
         from holomj.robots.attach import add_robot
+        from holomj.seeds import stage_rng
 
         start = time.perf_counter()
         compiled = add_robot(compiled, robot, stage_rng(seed, "robot"))
@@ -81,7 +89,9 @@ def compile_file(
         timings["check"] = time.perf_counter() - start
     report_json = {**result.to_report(), "simulation_warnings": sim_warnings}
     start = time.perf_counter()
-    export_scene(compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json})
+    write_scene_folder(
+        compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json}
+    )
     timings["export"] = time.perf_counter() - start
     return CompileReport(
         input=str(input_path),

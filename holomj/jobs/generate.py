@@ -12,31 +12,35 @@ and why, timings) and ``generate.log`` (one line per event).
 
 from __future__ import annotations
 
-import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
+from holomj.atomic import write_file
 from holomj.errors import HolomjError, InputError
-from holomj.export.writer import export_scene, prepare_output
-from holomj.generate.furnish import RoomContext, furnish_room, retrieve_room
-from holomj.generate.house import build_shell
-from holomj.generate.seeds import stage_rng
-from holomj.generate.small_objects import drop_small_objects
-from holomj.generate.stage_log import Listener, StageLog
+from holomj.jobs.folder import (
+    GENERATE_JSON,
+    GENERATE_LOG,
+    PLAN_JSON,
+    REPORT_JSON,
+    dump_json,
+    prepare_output,
+    write_scene_folder,
+)
+from holomj.jobs.stage_log import Listener, StageLog
+from holomj.layout.house_shell import build_shell
+from holomj.layout.room_furnishing import RoomContext, furnish_room, retrieve_room
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import check_profile, compile_scene
+from holomj.physics.small_object_drops import drop_small_objects
+from holomj.seeds import stage_rng
 from holomj.spec.materials import BUILTIN_MATERIALS
 from holomj.spec.plan import ScenePlan
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
 from holomj.spec.walls import derive_walls
 
-PLAN_JSON = "plan.json"
-REPORT_JSON = "report.json"
-GENERATE_JSON = "generate.json"
-GENERATE_LOG = "generate.log"
 MAX_PROMPT_CHARS = 2000
 
 
@@ -374,7 +378,7 @@ class _Run:
         self.record = self._record()
         with self.log.stage("export"):
             self.record["timings_s"] = dict(self.log.timings)
-            export_scene(
+            write_scene_folder(
                 self.compiled,
                 self.out,
                 overwrite=self.options.overwrite,
@@ -422,7 +426,6 @@ def _render(out: Path, options: GenerateOptions, log: StageLog) -> dict[str, Any
     """
     import json
 
-    from holomj.export.writer import dump_json
     from holomj.render import render_folder, write_report_html
 
     outcome: dict[str, Any] = {"ok": False, "error": None, "images": 0, "report_html": None}
@@ -444,9 +447,7 @@ def _render(out: Path, options: GenerateOptions, log: StageLog) -> dict[str, Any
     try:
         record = json.loads(record_path.read_text(encoding="utf-8"))
         record["render"] = outcome
-        tmp = record_path.with_name(f".{record_path.name}.tmp")
-        tmp.write_text(dump_json(record), encoding="utf-8")
-        os.replace(tmp, record_path)
+        write_file(record_path, dump_json(record))
     except (OSError, ValueError) as err:
         log.info("render", f"could not record the render outcome in {GENERATE_JSON}: {err}")
     return outcome
@@ -454,6 +455,4 @@ def _render(out: Path, options: GenerateOptions, log: StageLog) -> dict[str, Any
 
 def _write_log(path: Path, log: StageLog) -> None:
     """Replace the log written with the export by the complete one (atomically)."""
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(log.text(), encoding="utf-8")
-    os.replace(tmp, path)
+    write_file(path, log.text())

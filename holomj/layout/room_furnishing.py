@@ -25,7 +25,6 @@ from shapely import affinity
 from shapely.geometry import Point, Polygon, box
 
 from holomj.errors import HolomjError
-from holomj.generate.seeds import stage_rng
 from holomj.layout.room_problem import (
     LayoutDoor,
     LayoutObject,
@@ -36,6 +35,7 @@ from holomj.layout.room_problem import (
 from holomj.layout.solve import LayoutResult, Placement, solve_room
 from holomj.layout.wall_objects import FloorItem, WallObjectRequest, place_wall_objects
 from holomj.library.store import AssetLibrary
+from holomj.seeds import stage_rng
 from holomj.spec.plan import PlanObject, PlanRoom, instance_name
 from holomj.spec.scene import Door, Room, SceneObject, Window
 from holomj.spec.walls import Wall

@@ -1,4 +1,4 @@
-"""``holomj add-robot OUT SPEC``: put a robot into an exported scene folder, atomically.
+"""The add-robot job (``holomj add-robot OUT SPEC``): put a robot into a scene folder, atomically.
 
 The folder is recompiled from its ``scene.json`` with its own ``assets/`` library, the robot is
 placed and attached, a short simulation checks for MuJoCo warnings, and the folder is rewritten
@@ -11,15 +11,20 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import cast
 
-from holomj.errors import FormatError, InputError
-from holomj.export.writer import ASSETS_DIR, SCENE_JSON, export_scene
-from holomj.library.store import AssetLibrary
+from holomj.errors import InputError
+from holomj.jobs.folder import (
+    open_library,
+    read_robot,
+    read_scene,
+    require_scene_folder,
+    write_scene_folder,
+)
 from holomj.mjcf.compiler import Profile, compile_scene
 from holomj.physics.smoke import simulate
-from holomj.robots.attach import add_robot, read_robot_record
+from holomj.robots.attach import add_robot
 from holomj.robots.placement import DEFAULT_CLEARANCE_M
 from holomj.robots.records import RobotRecord
-from holomj.spec.scene_file import read_scene_file
+from holomj.seeds import stage_rng
 
 SMOKE_SECONDS = 1.0
 
@@ -48,26 +53,16 @@ def add_robot_to_folder(
     Raises :class:`~holomj.errors.InputError` when the folder is not a holomj scene, already
     has a robot (unless ``replace``), the robot is unknown or no spot is free.
     """
-    from holomj.generate.seeds import stage_rng
-
-    folder = Path(folder)
-    if not (folder / SCENE_JSON).is_file() or not (folder / ASSETS_DIR / "library.json").is_file():
-        raise FormatError(
-            "not a holomj scene folder (no scene.json and assets/library.json)",
-            where=str(folder),
-            fix="pass a folder written by 'holomj compile' or 'holomj generate'",
-        )
-    existing = read_robot_record(folder)
+    folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
+    existing = read_robot(folder)
     if existing is not None and not replace:
         raise InputError(
             f"the scene already has a robot ({existing.spec})",
             where=str(folder),
             fix="pass --replace to put the new robot in its place",
         )
-    scene = read_scene_file(folder / SCENE_JSON)
-    library = AssetLibrary.open(folder / ASSETS_DIR)
-    compiled = compile_scene(scene, library, profile=profile)
+    compiled = compile_scene(read_scene(folder), open_library(folder), profile=profile)
     compiled = add_robot(compiled, spec, stage_rng(seed, "robot"), clearance=clearance, room=room)
     warnings = simulate(compiled.model, SMOKE_SECONDS).warnings
-    export_scene(compiled, folder, overwrite=True, keep_from=folder)
+    write_scene_folder(compiled, folder, overwrite=True, keep_from=folder)
     return AddRobotResult(folder, cast(RobotRecord, compiled.robot), warnings)

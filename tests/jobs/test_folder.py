@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 from holomj.errors import ExportError, OutputExistsError
-from holomj.export import export_scene, writer
+from holomj.jobs import folder as writer
+from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.spec.base import read_json
@@ -24,7 +25,7 @@ from holomj.spec.scene import SceneSpec
 @pytest.fixture
 def exported(tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibrary):
     compiled = compile_scene(two_room_scene, empty_library)
-    out = export_scene(compiled, tmp_path / "out")
+    out = write_scene_folder(compiled, tmp_path / "out")
     return compiled, out
 
 
@@ -106,9 +107,9 @@ def test_existing_output_needs_overwrite(
     marker = out / "marker.txt"
     marker.write_text("keep")
     with pytest.raises(OutputExistsError, match="--overwrite"):
-        export_scene(compiled, out)
+        write_scene_folder(compiled, out)
     assert marker.read_text() == "keep"
-    export_scene(compiled, out, overwrite=True)
+    write_scene_folder(compiled, out, overwrite=True)
     assert not marker.exists()
     assert (out / "scene.xml").is_file()
 
@@ -127,15 +128,15 @@ def test_failed_export_leaves_nothing(
     target = tmp_path / "target"
     target.mkdir()
     with pytest.raises(ExportError, match="No space left"):
-        export_scene(compiled, target / "out")
+        write_scene_folder(compiled, target / "out")
     assert list(target.iterdir()) == []
     # A failed overwrite keeps the previous export intact.
     monkeypatch.setattr(writer, "_write_tree", real_write)
-    export_scene(compiled, target / "out")
+    write_scene_folder(compiled, target / "out")
     before = (target / "out" / "scene.xml").read_bytes()
     monkeypatch.setattr(writer, "_write_tree", half_written)
     with pytest.raises(ExportError):
-        export_scene(compiled, target / "out", overwrite=True)
+        write_scene_folder(compiled, target / "out", overwrite=True)
     assert (target / "out" / "scene.xml").read_bytes() == before
     assert [p.name for p in target.iterdir()] == ["out"]
 
@@ -144,7 +145,7 @@ def test_extra_reports_are_written(
     tmp_path: Path, two_room_scene: SceneSpec, empty_library: AssetLibrary
 ) -> None:
     compiled = compile_scene(two_room_scene, empty_library)
-    out = export_scene(
+    out = write_scene_folder(
         compiled, tmp_path / "out", extra_json={"import_report.json": {"substitutions": []}}
     )
     assert json.loads((out / "import_report.json").read_text()) == {"substitutions": []}
@@ -160,7 +161,7 @@ def test_textures_are_copied_and_scene_json_points_at_them(
     data["materials"] = {"marble_tex": {"texture": str(texture)}}
     data["rooms"][0]["floor_material"] = "marble_tex"
     compiled = compile_scene(SceneSpec.model_validate(data), empty_library)
-    out = export_scene(compiled, tmp_path / "out")
+    out = write_scene_folder(compiled, tmp_path / "out")
     scene = json.loads((out / "scene.json").read_text())
     assert scene["materials"]["marble_tex"]["texture"] == "assets/textures/marble_tex.png"
     assert (out / "assets/textures/marble_tex.png").read_bytes() == texture.read_bytes()

@@ -22,7 +22,7 @@ from holomj.spec.base import FrozenModel
 
 MAX_SEED = 2**32 - 1
 MAX_SEEDS_PER_LINE = 100_000
-MAX_PROMPT_CHARS = 2000  # as holomj.generate.runner (checked by a test), without its imports
+MAX_PROMPT_CHARS = 2000  # as holomj.jobs.generate (checked by a test), without its imports
 SLUG_WORDS = 6
 SLUG_CHARS = 40
 SEEDS_FIX = "write A:B with integers 0 <= A < B <= 4294967296, e.g. 0:4 for seeds 0, 1, 2, 3"

@@ -9,9 +9,9 @@ from pathlib import Path
 import mujoco
 import pytest
 
-from holomj.generate.furnish import FIXED_CATEGORIES, object_id
-from holomj.generate.runner import GenerateOptions, generate_scene
-from holomj.physics.settle import validate_path
+from holomj.jobs.generate import GenerateOptions, generate_scene
+from holomj.jobs.validate import validate
+from holomj.layout.room_furnishing import FIXED_CATEGORIES, object_id
 
 PROMPTS = [
     "a small kitchen",
@@ -55,7 +55,7 @@ def test_generate_gives_a_valid_stable_scene_with_the_requested_objects(
         asset = default_library.get(scene[name]["asset"]).meta
         assert asset.category in FIXED_CATEGORIES or set(asset.placement) <= {"wall", "ceiling"}
     # And 'holomj validate' with every piece of furniture free agrees.
-    free = validate_path(out, furniture="free", sleep=True)
+    free = validate(out, furniture="free", sleep=True)
     assert free.ok, (prompt, [(o.name, o.reasons) for o in free.unstable()])
 
     scene_ids = {o["id"] for o in json.loads((out / "scene.json").read_text())["objects"]}

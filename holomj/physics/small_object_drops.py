@@ -14,10 +14,10 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from holomj.errors import HolomjError
-from holomj.generate.furnish import AssetChooser
-from holomj.generate.seeds import stage_rng
+from holomj.layout.room_furnishing import AssetChooser
 from holomj.library.store import AssetLibrary
 from holomj.physics.spawn import populate
+from holomj.seeds import stage_rng
 from holomj.spec.plan import PlanObject
 from holomj.spec.scene import SceneSpec
 

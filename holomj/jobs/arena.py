@@ -21,21 +21,19 @@ import math
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 from dm_control import composer, mjcf
 from dm_control.mjcf import constants
 
 from holomj.errors import FormatError
-from holomj.export.writer import SCENE_JSON, SCENE_XML
+from holomj.jobs.folder import SCENE_XML, read_robot, read_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.mjcf.loading import load_model_file
-from holomj.robots.attach import read_robot_record
 from holomj.robots.occupancy import build_floor_grid
 from holomj.robots.placement import DEFAULT_CLEARANCE_M, Spot, choose_spot
 from holomj.robots.reach import compute_reach
 from holomj.robots.records import Footprint, RobotRecord
+from holomj.seeds import seed_rng
 from holomj.spec.scene import SceneSpec
-from holomj.spec.scene_file import read_scene_file
 
 
 def escape_name(name: str) -> str:
@@ -81,13 +79,13 @@ class HolomjArena(composer.Arena):
     def scene(self) -> SceneSpec:
         """The folder's ``scene.json``."""
         if self._scene is None:
-            self._scene = read_scene_file(self._folder / SCENE_JSON)
+            self._scene = read_scene(self._folder)
         return self._scene
 
     @property
     def robot_record(self) -> RobotRecord | None:
         """The folder's ``robot.json`` (a robot holomj attached), or None."""
-        return read_robot_record(self._folder)
+        return read_robot(self._folder)
 
     def robot_spot(
         self,
@@ -115,7 +113,7 @@ class HolomjArena(composer.Arena):
             reach,
             self.scene,
             footprint,
-            np.random.default_rng(seed),
+            seed_rng(seed),
             clearance=clearance,
             room=room,
         )

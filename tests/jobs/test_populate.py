@@ -9,10 +9,10 @@ import pytest
 from typer.testing import CliRunner
 
 from holomj.cli import app
-from holomj.cli_populate import parse_objects, populate_folder
 from holomj.errors import InputError
+from holomj.jobs.folder import load_for_physics
+from holomj.jobs.populate import parse_objects, populate_folder
 from holomj.library import AssetLibrary
-from holomj.physics.scene_io import load_scene
 from holomj.physics.smoke import simulate
 from tests.physics.spawn_helpers import receptacle_scene
 
@@ -46,7 +46,7 @@ def test_populate_writes_back_a_loadable_scene(folder: Path, default_library: As
     assert all(p["accepted"] for p in report["placements"])
     assert (folder / "import_report.json").is_file()  # other reports are kept
     assert not (folder / "report.json").exists()  # none to rewrite: none is made
-    loaded = load_scene(folder, furniture="as-is")
+    loaded = load_for_physics(folder, furniture="as-is")
     assert len(loaded.scene.objects) == 6
     assert simulate(loaded.model, 1.0).warnings == {}
     # a second run adds to the scene and to the report's history
@@ -54,7 +54,7 @@ def test_populate_writes_back_a_loadable_scene(folder: Path, default_library: As
     assert again.exit_code == 0, again.output
     report = json.loads((folder / "populate_report.json").read_text())
     assert len(report["runs"]) == 2
-    assert len(load_scene(folder).scene.objects) == 7
+    assert len(load_for_physics(folder).scene.objects) == 7
 
 
 def test_populate_json_and_partial_failure(folder: Path, default_library: AssetLibrary):
@@ -67,7 +67,7 @@ def test_populate_json_and_partial_failure(folder: Path, default_library: AssetL
     assert 0 < report["placed"] < 60
     failed = [p for p in report["placements"] if not p["accepted"]]
     assert failed and all(p["attempts"] <= 2 and p["reason"] for p in failed)
-    loaded = load_scene(folder, furniture="as-is")
+    loaded = load_for_physics(folder, furniture="as-is")
     assert len(loaded.scene.objects) == 1 + report["placed"]
     assert simulate(loaded.model, 1.0).warnings == {}
 

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 from shapely.geometry import Polygon
 
-from holomj.generate.house import build_shell, room_request
-from holomj.layout.openings import reachable
+from holomj.layout.door_window_placement import reachable
+from holomj.layout.house_shell import build_shell, room_request
 from holomj.spec.materials import Material
 from holomj.spec.plan import PlanRoom
 from holomj.spec.scene import SceneSpec
-from tests.generate.plans import two_room_plan
+from tests.layout.plans import two_room_plan
 
 
 def test_shell_has_every_room_connected_with_the_planned_windows() -> None:

@@ -6,17 +6,17 @@ import pytest
 from shapely import affinity
 from shapely.geometry import Polygon, box
 
-from holomj.generate.furnish import (
+from holomj.layout.house_shell import build_shell
+from holomj.layout.room_furnishing import (
     FIXED_CATEGORIES,
     RoomContext,
     furnish_room,
     object_id,
     retrieve_room,
 )
-from holomj.generate.house import build_shell
 from holomj.spec.scene import SceneSpec
-from tests.generate.choosers import CategoryChooser
-from tests.generate.plans import two_room_plan
+from tests.layout.choosers import CategoryChooser
+from tests.layout.plans import two_room_plan
 
 
 @pytest.fixture(scope="module")

@@ -1,10 +1,10 @@
 """The shell of a planned house: rooms packed into a floor plan, doors, windows, materials.
 
 Rooms come from :func:`holomj.layout.floorplan.plan_floor` (rectangles in rows), doors from
-:func:`holomj.layout.openings.place_doors` (a tree grown from the entrance), windows from
-:func:`holomj.layout.openings.place_windows`: rooms whose plan leaves the window count open get
-their type's default, the others exactly what the plan says. Each draws from its own stage
-generator.
+:func:`holomj.layout.door_window_placement.place_doors` (a tree grown from the entrance),
+windows from :func:`holomj.layout.door_window_placement.place_windows`: rooms whose plan leaves
+the window count open get their type's default, the others exactly what the plan says. Each
+draws from its own stage generator.
 """
 
 from __future__ import annotations
@@ -13,9 +13,9 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from holomj.generate.seeds import stage_rng
+from holomj.layout.door_window_placement import WindowRequest, place_doors, place_windows
 from holomj.layout.floorplan import RoomRequest, plan_floor
-from holomj.layout.openings import WindowRequest, place_doors, place_windows
+from holomj.seeds import stage_rng
 from holomj.spec.materials import Material
 from holomj.spec.plan import PlanRoom, ScenePlan
 from holomj.spec.scene import Door, Room, Window

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from holomj.generate.runner import GenerateOptions, generate_scene
+from holomj.jobs.generate import GenerateOptions, generate_scene
 
 QUICKSTART_PROMPT = "a two-bedroom apartment with a home office"
 QUICKSTART_SEED = 7

@@ -1,1 +1,0 @@
-"""Text to scene: plan -> retrieve -> layout -> compile -> spawn-and-drop -> validate -> export."""

@@ -1,0 +1,10 @@
+"""The jobs layer: one module per user-facing job, and the one module that owns output folders.
+
+- :mod:`~holomj.jobs.folder`: the output folder's file names; reading and writing it atomically
+- :mod:`~holomj.jobs.compile`, :mod:`~holomj.jobs.generate`, :mod:`~holomj.jobs.validate`,
+  :mod:`~holomj.jobs.populate`, :mod:`~holomj.jobs.add_robot`, :mod:`~holomj.jobs.info`:
+  the jobs the CLI and the Python API (``holomj.generate(...)`` and friends) run
+- :mod:`~holomj.jobs.arena`: a scene folder as a dm_control composer Arena
+
+Below this layer, stages take and return data in memory and never touch an output folder.
+"""

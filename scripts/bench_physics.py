@@ -16,13 +16,13 @@ from pathlib import Path
 
 import mujoco
 from bench_scenes import grid_house  # sibling module in scripts/
+from spawn_bench import bench_populate  # sibling module in scripts/
 
 from asset_pipeline.default_library import ensure_default_library
 from holomj.jobs.folder import load_for_physics, write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.physics.settle import validate_loaded
-from holomj.physics.spawn_bench import bench_populate
 
 
 def bench_validate(library: AssetLibrary, n: int, sleep: bool, tmp: Path) -> dict:

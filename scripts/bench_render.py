@@ -23,18 +23,20 @@ from typing import Any
 from bench_scenes import grid_house  # sibling module in scripts/
 
 from asset_pipeline.default_library import ensure_default_library
-from holomj.jobs.folder import write_scene_folder
+from holomj.jobs.folder import read_scene, write_scene_folder
+from holomj.jobs.render import load_scene_model, render_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
-from holomj.render import gl, render_folder
-from holomj.render.cameras import room_camera, top_camera
-from holomj.render.jobs import house_bounds
-from holomj.render.source import RenderScene, load_render_scene, read_scene
-from holomj.render.views import scene_option
+from holomj.rendering import gl
+from holomj.rendering.cameras import CameraPose, room_camera, top_camera
+from holomj.rendering.source import RenderScene, prepare_scene, settled_qpos
+from holomj.rendering.view_plan import house_bounds
+from holomj.rendering.views import scene_option
 
 
-def _fps(rs: RenderScene, renderer: Any, camera: str, top: bool, frames: int) -> float:
+def _fps(rs: RenderScene, renderer: Any, pose: CameraPose, top: bool, frames: int) -> float:
     option = scene_option(show_ceilings=not top)
+    camera = rs.aim(pose)
     renderer.update_scene(rs.data, camera=camera, scene_option=option)
     renderer.render()  # warm-up: shaders, textures, shadow map
     start = time.perf_counter()
@@ -69,24 +71,23 @@ def main() -> int:
     with tempfile.TemporaryDirectory() as tmp:
         out = write_scene_folder(compile_scene(scene, library), Path(tmp) / "house")
         scene = read_scene(out)
-        names = ["render/top"] + [f"render/room/{r.id}" for r in scene.rooms]
-        rs = load_render_scene(out, scene, names, args.width, args.height)
+        model = load_scene_model(out)
+        rs = prepare_scene(model, scene, args.width, args.height, qpos=settled_qpos(model))
         top = top_camera(house_bounds(scene), args.width, args.height, scene.wall_height)
-        rs.place(top.pose("render/top"))
+        top_pose = top.pose("render/top")
         masses = [m for m in (rs.mass(o.id) for o in scene.objects) if m is not None]
-        for room in scene.rooms:
-            name, aspect = f"render/room/{room.id}", args.width / args.height
-            rs.place(room_camera(name, room.polygon, masses, scene.wall_height, aspect))
+        aspect = args.width / args.height
+        room_poses = [
+            room_camera(f"render/room/{room.id}", room.polygon, masses, scene.wall_height, aspect)
+            for room in scene.rooms
+        ]
         results: dict[str, dict[str, float]] = {}
         with gl.open_renderer(rs.model, args.width, args.height) as renderer:
             renderer_name = gl.renderer_name()
             for shadows in (True, False):
                 renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = shadows
-                top_fps = _fps(rs, renderer, "render/top", True, args.frames)
-                room_fps = [
-                    _fps(rs, renderer, f"render/room/{r.id}", False, args.frames)
-                    for r in scene.rooms
-                ]
+                top_fps = _fps(rs, renderer, top_pose, True, args.frames)
+                room_fps = [_fps(rs, renderer, pose, False, args.frames) for pose in room_poses]
                 results["shadows" if shadows else "no_shadows"] = {
                     "top_fps": round(top_fps, 2),
                     "room_fps_median": round(statistics.median(room_fps), 2),

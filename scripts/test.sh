@@ -4,4 +4,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh dev
 .venv/bin/ruff check holomj asset_pipeline mjcf_templates scripts tests
+.venv/bin/python scripts/check_imports.py
 .venv/bin/python -m pytest -n 2 -q "$@"

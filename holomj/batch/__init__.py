@@ -7,7 +7,9 @@
 - :mod:`~holomj.batch.local` and :mod:`~holomj.batch.ray_engine`: the engines (a pool of
   long-lived worker processes; Ray tasks);
 - :mod:`~holomj.batch.summary`: ``summary.jsonl`` and the totals;
-- :mod:`~holomj.batch.run`: the orchestration (:func:`run_batch`).
+- :mod:`~holomj.batch.run`: the orchestration (:func:`run_batch`);
+- :mod:`~holomj.batch.jobs_file`: the batch job as ``holomj batch`` runs it (a jobs file and
+  options in, the checks made once, an engine chosen, the outcome out).
 """
 
 from __future__ import annotations

@@ -28,7 +28,7 @@ from holomj.mjcf.compiler import CompiledScene
 from holomj.physics.surfaces_world import object_yaw, world_surfaces
 from holomj.robots import shapes
 from holomj.robots.attach import MOUNT_BODY
-from holomj.robots.records import ROBOT_PREFIX
+from holomj.spec.robot import ROBOT_PREFIX
 from holomj.spec.walls import room_polygon
 
 OBJECTS_JSON = "objects.json"

@@ -23,8 +23,8 @@ from holomj.mjcf.compiler import Profile, compile_scene
 from holomj.physics.smoke import simulate
 from holomj.robots.attach import add_robot
 from holomj.robots.placement import DEFAULT_CLEARANCE_M
-from holomj.robots.records import RobotRecord
 from holomj.seeds import stage_rng
+from holomj.spec.robot import RobotRecord
 
 SMOKE_SECONDS = 1.0
 
@@ -43,7 +43,7 @@ def add_robot_to_folder(
     spec: str,
     *,
     seed: int = 0,
-    clearance: float = DEFAULT_CLEARANCE_M,
+    clearance: float | None = None,
     room: str | None = None,
     profile: Profile = "default",
     replace: bool = False,
@@ -51,8 +51,10 @@ def add_robot_to_folder(
     """Attach the robot ``spec`` to the scene folder ``folder`` (see the module docstring).
 
     Raises :class:`~holomj.errors.InputError` when the folder is not a holomj scene, already
-    has a robot (unless ``replace``), the robot is unknown or no spot is free.
+    has a robot (unless ``replace``), the robot is unknown or no spot is free. ``clearance``
+    defaults to :data:`~holomj.robots.placement.DEFAULT_CLEARANCE_M`.
     """
+    clearance = DEFAULT_CLEARANCE_M if clearance is None else clearance
     folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
     existing = read_robot(folder)
     if existing is not None and not replace:

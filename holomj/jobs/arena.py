@@ -31,8 +31,8 @@ from holomj.mjcf.loading import load_model_file
 from holomj.robots.occupancy import build_floor_grid
 from holomj.robots.placement import DEFAULT_CLEARANCE_M, Spot, choose_spot
 from holomj.robots.reach import compute_reach
-from holomj.robots.records import Footprint, RobotRecord
 from holomj.seeds import seed_rng
+from holomj.spec.robot import Footprint, RobotRecord
 from holomj.spec.scene import SceneSpec
 
 

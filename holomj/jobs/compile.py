@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from holomj.export.info import model_summary, scene_summary
+from holomj.export.summaries import model_summary, scene_summary
 from holomj.jobs.folder import IMPORT_REPORT, prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import check_profile, compile_scene

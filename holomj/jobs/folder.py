@@ -36,8 +36,8 @@ from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.objects import Furniture
 from holomj.physics.scene_io import LoadedScene, load_mjcf, loaded_from_compiled
-from holomj.robots.records import RobotRecord
 from holomj.spec.base import read_json, validate_model
+from holomj.spec.robot import RobotRecord
 from holomj.spec.scene import SceneSpec
 from holomj.spec.scene_file import read_scene_file
 

@@ -3,7 +3,8 @@
 Stages, each timed in the log: plan (offline knowledge base, or an LLM with the offline planner
 as fallback) -> retrieve + layout per room (floor plan, doors, windows, materials, furniture,
 wall objects) -> small objects (spawn-and-drop) -> compile -> validate -> export (atomic) ->
-render (optional, after the export; a failed render is logged and leaves the scene intact).
+render (optional, after the export; a failed render is recorded and leaves the scene intact).
+The scene is compiled once: validation, export and render use that model in memory.
 
 ``OUT`` receives ``scene.xml``, ``assets/``, ``scene.json``, ``plan.json``, ``report.json`` (the
 validation report, as ``holomj validate`` writes it), ``generate.json`` (what every stage chose
@@ -28,11 +29,12 @@ from holomj.jobs.folder import (
     prepare_output,
     write_scene_folder,
 )
+from holomj.jobs.plan import PlanOptions, check_planner, make_plan
 from holomj.jobs.stage_log import Listener, StageLog
 from holomj.layout.house_shell import build_shell
 from holomj.layout.room_furnishing import RoomContext, furnish_room, retrieve_room
 from holomj.library.store import AssetLibrary
-from holomj.mjcf.compiler import check_profile, compile_scene
+from holomj.mjcf.compiler import CompiledScene, check_profile, compile_scene
 from holomj.physics.small_object_drops import drop_small_objects
 from holomj.seeds import stage_rng
 from holomj.spec.materials import BUILTIN_MATERIALS
@@ -42,19 +44,7 @@ from holomj.spec.scene import SceneSpec
 from holomj.spec.walls import derive_walls
 
 MAX_PROMPT_CHARS = 2000
-
-
-@dataclass(frozen=True)
-class PlanOptions:
-    """What the plan stage needs: the seed, which planner, the text model and the LLM server."""
-
-    seed: int = 0
-    planner: Literal["offline", "llm"] = "offline"
-    text_model: Path | None = None
-    llm_base_url: str | None = None
-    llm_model: str | None = None
-    llm_api_key: str | None = None
-    llm_config: Path | None = None
+FURNITURE_MODES = ("free", "static")
 
 
 @dataclass(frozen=True)
@@ -106,6 +96,22 @@ class GenerateResult:
     record: dict[str, Any]
 
     @property
+    def folder(self) -> Path:
+        """The scene folder written."""
+        return self.out
+
+    @property
+    def ok(self) -> bool:
+        """The scene validated ok."""
+        return self.report.ok
+
+    @property
+    def render_error(self) -> str | None:
+        """Why the render stage failed (None when it succeeded or did not run)."""
+        outcome = self.record.get("render")
+        return None if not outcome or outcome.get("ok") else str(outcome.get("error"))
+
+    @property
     def timings(self) -> dict[str, float]:
         """Wall time per stage in seconds (as in ``generate.json``)."""
         return self.record["timings_s"]
@@ -133,38 +139,6 @@ def scene_name(prompt: str) -> str:
     return "_".join(words)[:64] or "scene"
 
 
-def make_plan(prompt: str, options: PlanOptions, categories: list[str], log: StageLog) -> ScenePlan:
-    """The plan of ``prompt``: offline, or from the LLM with the offline planner as fallback."""
-    from holomj.plan.offline import plan_offline
-    from holomj.retrieval.text import text_encoder
-
-    def offline(text: str, seed: int) -> ScenePlan:
-        # Without a chosen model the planner loads the default one itself, and only when a
-        # scene type or object has to be matched by embedding.
-        encoder = text_encoder(options.text_model) if options.text_model is not None else None
-        return plan_offline(text, seed, encoder=encoder)
-
-    if options.planner == "offline":
-        return offline(prompt, options.seed)
-    from holomj.plan.llm import plan_llm
-    from holomj.plan.llm_config import load_llm_config
-
-    config = load_llm_config(
-        base_url=options.llm_base_url,
-        model=options.llm_model,
-        api_key=options.llm_api_key,
-        config_file=options.llm_config,
-    )
-    return plan_llm(
-        prompt,
-        options.seed,
-        config=config,
-        fallback=offline,
-        categories=categories,
-        log=lambda line: log.info("plan", line),
-    )
-
-
 def generate_scene(
     prompt: str,
     out: Path,
@@ -179,6 +153,11 @@ def generate_scene(
         raise InputError(
             f"the prompt has {len(prompt)} characters, more than {MAX_PROMPT_CHARS}",
             where="PROMPT",
+        )
+    check_planner(options.planner)
+    if options.furniture not in FURNITURE_MODES:
+        raise InputError(
+            f"unknown value {options.furniture!r}", where="--furniture", fix="use free or static"
         )
     out = Path(out)
     prepare_output(out, options.overwrite)
@@ -195,7 +174,7 @@ def generate_scene(
     run.validate_stage()
     run.export_stage()
     if options.render:
-        _render(out, options, run.log)
+        run.record["render"] = _render(out, options, run.log, run.compiled)
     _write_log(out / GENERATE_LOG, run.log)
     run.record["timings_s"] = dict(run.log.timings)
     return GenerateResult(out, run.plan, run.report, run.record)
@@ -415,7 +394,9 @@ class _Run:
         }
 
 
-def _render(out: Path, options: GenerateOptions, log: StageLog) -> dict[str, Any]:
+def _render(
+    out: Path, options: GenerateOptions, log: StageLog, compiled: CompiledScene
+) -> dict[str, Any]:
     """Render views and the HTML report into ``out``; a failure is recorded, not raised.
 
     The outcome goes into the log and, as ``render`` (``ok``, ``error``, ``images``,
@@ -426,13 +407,13 @@ def _render(out: Path, options: GenerateOptions, log: StageLog) -> dict[str, Any
     """
     import json
 
-    from holomj.render import render_folder, write_report_html
+    from holomj.jobs.render import render_folder, write_report_html
 
     outcome: dict[str, Any] = {"ok": False, "error": None, "images": 0, "report_html": None}
     try:
         with log.stage("render"):
             width, height = options.render_size
-            summary = render_folder(out, width=width, height=height)
+            summary = render_folder(out, width=width, height=height, compiled=compiled)
             outcome["images"] = sum(f.endswith(".png") for f in summary.files)
             page = write_report_html(out)
             outcome.update(ok=True, report_html=page.name)

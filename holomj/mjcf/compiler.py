@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import hashlib
 import re
 from dataclasses import dataclass, field
+from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Literal
 
 import mujoco
@@ -19,7 +21,7 @@ from holomj.spec.scene import SceneSpec
 from mjcf_templates import template_path
 
 if TYPE_CHECKING:
-    from holomj.robots.records import RobotRecord
+    from holomj.spec.robot import RobotRecord
 
 BASE_TEMPLATE = "base_scene.xml"
 Profile = Literal["default", "mjx"]
@@ -85,13 +87,13 @@ def compile_scene(
     objects.add_all()
     add_lights(ctx)
     add_cameras(ctx)
-    spec.assets = dict(ctx.files)
     if profile == "mjx":
         from holomj.mjcf.mjx_profile import apply_mjx_profile
 
         apply_mjx_profile(spec)
     try:
-        model = spec.compile()
+        spec.assets = dict(ctx.files)  # kept with the spec: its XML export opens them
+        model = compile_spec(spec, ctx.files)
     except ValueError as err:
         raise CompileError(f"MuJoCo rejected the model: {' '.join(str(err).split())}") from None
     return CompiledScene(
@@ -103,6 +105,39 @@ def compile_scene(
         furniture=furniture,
         profile=profile,
     )
+
+
+def compile_spec(spec: mujoco.MjSpec, files: dict[str, bytes]) -> mujoco.MjModel:
+    """Compile ``spec`` with ``files`` (keyed as its meshes and textures name them, relative to
+    its ``meshdir``/``texturedir``) as MuJoCo's in-memory file system; the spec is left as it
+    was (its ``assets`` too), so its XML still names the files in their folders.
+
+    MuJoCo 3.17 finds in-memory files loosely (with a ``meshdir``, files of the same name in
+    different folders, such as every asset's ``visual_0.obj``, all get the bytes of one of them)
+    and caches decoded meshes by file name across compiles (another scene's ``visual_0.obj``
+    would be reused). So for the compile every file is renamed to a flat name made from a hash
+    of its bytes: exact, and a cache hit is always the same content.
+    Raises ``ValueError`` as ``MjSpec.compile`` does.
+    """
+    flat = {
+        name: f"{hashlib.sha256(data).hexdigest()[:24]}{PurePosixPath(name).suffix}"
+        for name, data in files.items()
+    }
+    renamed: list[tuple[object, str]] = []
+    dirs, assets = (spec.meshdir, spec.texturedir), dict(spec.assets)
+    try:
+        for element in [*spec.meshes, *spec.textures]:
+            if element.file and element.file in flat:
+                renamed.append((element, element.file))
+                element.file = flat[element.file]
+        spec.meshdir = spec.texturedir = ""
+        spec.assets = {flat[name]: data for name, data in files.items()}
+        return spec.compile()
+    finally:
+        spec.meshdir, spec.texturedir = dirs
+        for element, name in renamed:
+            element.file = name  # type: ignore[attr-defined]
+        spec.assets = assets
 
 
 def _model_name(name: str) -> str:

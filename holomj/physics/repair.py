@@ -26,7 +26,7 @@ import mujoco
 import numpy as np
 
 from holomj.errors import InputError
-from holomj.mjcf.compiler import CompiledScene
+from holomj.mjcf.compiler import CompiledScene, compile_spec
 from holomj.mjcf.objects import Furniture
 from holomj.physics.audit import GeomOwners, find_overlaps
 from holomj.physics.scene_io import LoadedScene
@@ -273,7 +273,7 @@ def add_settled_key(
         start, src = model.jnt_qposadr[joint], settled.jnt_qposadr[source.id]
         qpos[start : start + width] = data.qpos[src : src + width]
     compiled.spec.add_key(name=SETTLED_KEY, qpos=[float(q) for q in qpos], time=0.0)
-    compiled.model = compiled.spec.compile()
+    compiled.model = compile_spec(compiled.spec, compiled.files)
 
 
 def _qpos_width(kind: int) -> int:

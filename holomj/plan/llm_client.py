@@ -24,9 +24,9 @@ from dataclasses import dataclass
 from typing import Any
 from urllib.parse import urlsplit
 
-from holomj import __version__
 from holomj.errors import HolomjError
 from holomj.plan.llm_config import LLMConfig
+from holomj.version import __version__
 
 MAX_RESPONSE_BYTES = 8 * 1024 * 1024
 _BODY_SNIPPET = 200

@@ -10,8 +10,8 @@
 from holomj.robots.attach import add_robot, attach_recorded, reattach_robot
 from holomj.robots.placement import Spot, choose_spot
 from holomj.robots.prepare import PreparedRobot, prepare_robot
-from holomj.robots.records import Footprint, RobotRecord
 from holomj.robots.registry import RobotSource, available_robots, resolve_robot
+from holomj.spec.robot import Footprint, RobotRecord
 
 __all__ = [
     "Footprint",

@@ -2,7 +2,7 @@
 
 The robot goes under the prefix ``robot/``, inside a static mount body ``robot/base_mount`` at
 its spot (so the XML holds no ``<frame>``), with its files among the scene's asset files under
-``robot/`` and its prepared MJCF as ``robot.xml``; :class:`~holomj.robots.records.RobotRecord`
+``robot/`` and its prepared MJCF as ``robot.xml``; :class:`~holomj.spec.robot.RobotRecord`
 says where it stands, so :func:`attach_recorded` can put it back when the scene is recompiled
 (the jobs layer reads it from a folder's ``robot.json``) and :func:`reattach_robot` can carry
 it over to another compile of the scene in memory.
@@ -17,15 +17,15 @@ import mujoco
 import numpy as np
 
 from holomj.errors import CompileError, FormatError, HolomjError, InputError, SpecError
-from holomj.mjcf.compiler import CompiledScene
+from holomj.mjcf.compiler import CompiledScene, compile_spec
 from holomj.mjcf.geometry import yaw_quat
 from holomj.physics.bounds import world_aabbs
 from holomj.robots.occupancy import build_floor_grid
 from holomj.robots.placement import DEFAULT_CLEARANCE_M, Spot, choose_spot
 from holomj.robots.prepare import PreparedRobot, prepare_robot
 from holomj.robots.reach import compute_reach
-from holomj.robots.records import ROBOT_PREFIX, ROBOT_XML, RobotRecord
 from holomj.robots.registry import RobotSource, resolve_robot
+from holomj.spec.robot import ROBOT_PREFIX, ROBOT_XML, RobotRecord
 
 MOUNT_BODY = f"{ROBOT_PREFIX}base_mount"
 PENETRATION_TOLERANCE_M = 0.001
@@ -123,9 +123,9 @@ def attach_prepared(
         from holomj.mjcf.mjx_profile import apply_mjx_profile
 
         apply_mjx_profile(spec)
-    spec.assets = merged
     try:
-        model = spec.compile()
+        spec.assets = dict(merged)  # kept with the spec: its XML export opens them
+        model = compile_spec(spec, merged)
     except ValueError as err:
         raise CompileError(
             f"MuJoCo rejected the scene with the robot: {' '.join(str(err).split())}"

@@ -19,7 +19,7 @@ import numpy as np
 from holomj.errors import InputError
 from holomj.robots.occupancy import FloorGrid
 from holomj.robots.reach import Reach
-from holomj.robots.records import Footprint
+from holomj.spec.robot import Footprint
 from holomj.spec.scene import SceneSpec
 from holomj.spec.walls import room_polygon
 

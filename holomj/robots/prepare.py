@@ -32,9 +32,10 @@ import numpy as np
 import shapely
 
 from holomj.errors import InputError
+from holomj.mjcf.compiler import compile_spec
 from holomj.robots import shapes
-from holomj.robots.records import Footprint
 from holomj.robots.registry import RobotSource
+from holomj.spec.robot import Footprint
 
 FILE_ROOT = "robot"
 HAND_PREFIX = "hand/"
@@ -92,20 +93,22 @@ def prepare_robot(source: RobotSource) -> PreparedRobot:
         spec.delete(key)
     _fix_base(spec, notes)
     _hold_still(spec, notes)
-    spec.assets = dict(files)
-    model = _compile(spec, source)
+    spec.assets = dict(files)  # kept with the spec: copies and re-parses need them
+    model = _compile(spec, files, source)
     home = _home_pose(model, wanted, source)
     _apply_home(spec, model, home)
-    model = _compile(spec, source)
+    model = _compile(spec, files, source)
     _check_home(model, home, source)
     if _exclude_self_contacts(spec, model, source, notes):
-        model = _compile(spec, source)
+        model = _compile(spec, files, source)
     return PreparedRobot(source, spec, files, home, footprint_of(model), notes)
 
 
-def _compile(spec: mujoco.MjSpec, source: RobotSource) -> mujoco.MjModel:
+def _compile(
+    spec: mujoco.MjSpec, files: dict[str, bytes], source: RobotSource
+) -> mujoco.MjModel:
     try:
-        return spec.compile()
+        return compile_spec(spec, files)
     except ValueError as err:
         raise InputError(
             f"MuJoCo rejected the robot: {' '.join(str(err).split())}", where=str(source.xml)
@@ -195,9 +198,7 @@ def _keyframe_home(
     """Hinge and slide values of the MJCF's own keyframe ``home`` (empty when it has none)."""
     if not any(key.name == HOME_KEY for key in spec.keys):
         return {}
-    copy = spec.copy()
-    copy.assets = dict(files)
-    model = _compile(copy, source)
+    model = _compile(spec.copy(), files, source)
     qpos = model.key(HOME_KEY).qpos
     return {
         model.joint(j).name: float(qpos[model.jnt_qposadr[j]])

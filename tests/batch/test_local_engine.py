@@ -8,7 +8,6 @@ import sys
 from pathlib import Path
 
 import pytest
-from typer.testing import CliRunner
 
 from holomj.batch.job_list import Job, job_id
 from holomj.batch.local import LocalEngine
@@ -17,7 +16,6 @@ from holomj.batch.result import JobOptions
 from holomj.batch.resume import MARKER
 from holomj.batch.run import run_batch
 from holomj.batch.summary import SUMMARY, read_summary
-from holomj.cli import app
 from holomj.errors import InputError
 from tests.batch.fake_jobs import fake_job
 
@@ -112,35 +110,6 @@ def test_a_rerun_skips_complete_jobs_and_runs_failed_ones_again(tmp_path: Path) 
     assert [r.id for r in read_summary(out / SUMMARY)] == [j.id for j in second]
     record = json.loads((out / "batch.json").read_text())
     assert record["engine"] == "local" and len(record["jobs"]) == 3
-
-
-def test_cli_bad_input_is_one_line_and_exit_2(tmp_path: Path, empty_library) -> None:
-    runner = CliRunner()
-    jobs = tmp_path / "jobs.txt"
-    jobs.write_text("a small kitchen\n")
-    cases = [
-        (["batch", str(tmp_path / "missing.txt"), "-o", str(tmp_path / "o")], "not found"),
-        (["batch", str(jobs), "-o", str(tmp_path / "o"), "--seeds", "3:1"], "--seeds"),
-        (["batch", str(jobs), "-o", str(tmp_path / "o"), "--planner", "magic"], "--planner"),
-        (["batch", str(jobs), "-o", str(tmp_path / "o"), "--workers", "0"], "--workers"),
-    ]
-    for args, message in cases:
-        result = runner.invoke(app, args)
-        assert result.exit_code == 2, (args, result.output)
-        assert message in result.output
-    assert not (tmp_path / "o").exists()
-    blocked = tmp_path / "file"
-    blocked.write_text("x")
-    lib = ["--library", str(empty_library.root)]
-    result = runner.invoke(app, ["batch", str(jobs), "-o", str(blocked), *lib])
-    assert result.exit_code == 2 and "not a folder" in result.output
-    result = runner.invoke(app, ["batch", str(jobs), "-o", str(tmp_path / "o"), "--library", "."])
-    assert result.exit_code == 2 and "not an asset library" in result.output
-    result = runner.invoke(
-        app, ["batch", str(jobs), "-o", str(tmp_path / "o"), *lib, "--text-model", "nope"]
-    )
-    assert result.exit_code == 2 and "--text-model" in result.output
-    assert not (tmp_path / "o").exists()
 
 
 def test_missing_ray_names_the_extra(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -152,7 +152,7 @@ def test_a_render_failure_is_printed_recorded_and_fails_strict(
     def no_gl(*args, **kwargs):
         raise HolomjError("no OpenGL backend can render headless (MUJOCO_GL=egl: test)")
 
-    monkeypatch.setattr("holomj.render.render_folder", no_gl)
+    monkeypatch.setattr("holomj.jobs.render.render_folder", no_gl)
     out = tmp_path / "out"
     base = ["generate", PROMPT, "-o", str(out), "--library", str(default_library.root)]
     result = runner.invoke(app, [*base, "--strict"])
@@ -170,7 +170,7 @@ def test_a_render_failure_is_printed_recorded_and_fails_strict(
     assert json.loads(result.stdout)["render"] == {"ok": False, "error": lines[0][15:]}
     assert "render failed: no OpenGL backend" in result.stderr
     # A render that works: --strict exits 0 and the record says so.
-    from holomj.render import RenderSummary
+    from holomj.jobs.render import RenderSummary
 
     def fake_render(folder: Path, **kwargs) -> RenderSummary:
         return RenderSummary(str(folder), "egl", "fake", {}, ["renders/top.png"], [])
@@ -179,24 +179,11 @@ def test_a_render_failure_is_printed_recorded_and_fails_strict(
         (folder / "report.html").write_text("<html></html>")
         return folder / "report.html"
 
-    monkeypatch.setattr("holomj.render.render_folder", fake_render)
-    monkeypatch.setattr("holomj.render.write_report_html", fake_page)
+    monkeypatch.setattr("holomj.jobs.render.render_folder", fake_render)
+    monkeypatch.setattr("holomj.jobs.render.write_report_html", fake_page)
     result = runner.invoke(app, [*base, "--overwrite", "--strict"])
     assert result.exit_code == 0, result.output
     assert "render failed" not in result.output
     record = json.loads((out / "generate.json").read_text())
     expected = {"ok": True, "error": None, "images": 1, "report_html": "report.html"}
     assert record["render"] == expected
-
-
-def test_render_failure_reads_the_generate_record(tmp_path: Path) -> None:
-    from holomj.cli_generate import render_failure
-
-    record = tmp_path / "generate.json"
-    assert "cannot read the render outcome" in (render_failure(tmp_path) or "")
-    record.write_text(json.dumps({"prompt": "x"}))
-    assert "holds no render outcome" in (render_failure(tmp_path) or "")
-    record.write_text(json.dumps({"render": {"ok": False, "error": "boom"}}))
-    assert render_failure(tmp_path) == "boom"
-    record.write_text(json.dumps({"render": {"ok": True, "error": None}}))
-    assert render_failure(tmp_path) is None

@@ -12,7 +12,7 @@ from holomj.mjcf.compiler import CompiledScene
 from holomj.robots.occupancy import build_floor_grid
 from holomj.robots.placement import choose_spot
 from holomj.robots.reach import cells_in_disc, compute_reach
-from holomj.robots.records import Footprint
+from holomj.spec.robot import Footprint
 
 
 def _footprint(radius: float, front_deg: float = 0.0) -> Footprint:

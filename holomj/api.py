@@ -1,0 +1,250 @@
+"""The Python API, re-exported from :mod:`holomj`: one function per job, keyword arguments that
+mirror the command line's options, typed results (the models the JSON files hold), and the
+:class:`~holomj.errors.HolomjError` types the command line prints.
+
+Every function loads what it needs when it is called; ``import holomj`` loads none of it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Literal
+
+from holomj.jobs.scene_reader import Scene as Scene  # re-exported as holomj.Scene
+from holomj.library.store import AssetLibrary as _StoreLibrary
+
+if TYPE_CHECKING:
+    from holomj.jobs.add_robot import AddRobotResult
+    from holomj.jobs.compile import CompileReport
+    from holomj.jobs.generate import GenerateResult
+    from holomj.jobs.populate import PopulateResult
+    from holomj.jobs.stage_log import Listener
+    from holomj.spec.report import StabilityReport
+
+
+
+
+class AssetLibrary(_StoreLibrary):
+    """An asset library on disk: ``AssetLibrary.open(path)``, or ``AssetLibrary.default()``."""
+
+    @classmethod
+    def default(cls) -> AssetLibrary:
+        """The default library (``$HOLOMJ_HOME/library``), built on first use like the CLI's."""
+        from holomj.jobs.library import resolve_library
+
+        return cls.open(resolve_library(None))
+
+
+def _library_root(library: Path | str | AssetLibrary | None) -> Path:
+    from holomj.jobs.library import resolve_library
+
+    if isinstance(library, _StoreLibrary):
+        return library.root
+    return resolve_library(library)
+
+
+def generate(
+    prompt: str,
+    out: Path | str,
+    *,
+    seed: int = 0,
+    planner: Literal["offline", "llm"] = "offline",
+    library: Path | str | AssetLibrary | None = None,
+    overwrite: bool = False,
+    render: bool = True,
+    width: int = 640,
+    height: int = 480,
+    furniture: Literal["free", "static"] = "free",
+    robot: str | None = None,
+    profile: Literal["default", "mjx"] = "default",
+    text_model: Path | None = None,
+    clip_weights: Path | None = None,
+    clip_model: str | None = None,
+    materials: Path | None = None,
+    llm_base_url: str | None = None,
+    llm_model: str | None = None,
+    llm_api_key: str | None = None,
+    llm_config: Path | None = None,
+    layout_time: float = 1.0,
+    listener: Listener | None = None,
+) -> GenerateResult:
+    """``holomj generate``: a prompt in, a validated scene folder ``out`` written.
+
+    Returns a :class:`~holomj.jobs.generate.GenerateResult` (``.folder``, ``.plan``,
+    ``.report`` with ``.ok``, ``.record``, ``.timings``). Raises
+    :class:`~holomj.errors.InputError` for an empty or too long prompt or a bad option,
+    :class:`~holomj.errors.OutputExistsError` when ``out`` exists (without ``overwrite``), and
+    other :class:`~holomj.errors.HolomjError` types when a stage fails; a failed render is
+    recorded in the result (``.render_error``), not raised. ``listener(stage, message)`` sees
+    every line of the stage log as it happens.
+    """
+    from holomj.jobs.generate import GenerateOptions, generate_scene
+
+    options = GenerateOptions(
+        library=_library_root(library),
+        seed=seed,
+        planner=planner,
+        overwrite=overwrite,
+        render=render,
+        render_size=(width, height),
+        text_model=text_model,
+        clip_weights=clip_weights,
+        clip_model=clip_model,
+        materials=materials,
+        llm_base_url=llm_base_url,
+        llm_model=llm_model,
+        llm_api_key=llm_api_key,
+        llm_config=llm_config,
+        layout_time_s=layout_time,
+        furniture=furniture,
+        robot=robot,
+        profile=profile,
+    )
+    return generate_scene(prompt, Path(out), options, listener=listener)
+
+
+def compile(
+    source: Path | str,
+    out: Path | str,
+    *,
+    library: Path | str | AssetLibrary | None = None,
+    format: str | None = None,
+    overwrite: bool = False,
+    robot: str | None = None,
+    profile: Literal["default", "mjx"] = "default",
+    seed: int = 0,
+    check_seconds: float = 1.0,
+) -> CompileReport:
+    """``holomj compile``: a holomj ``scene.json``, ProcTHOR/Holodeck house or SceneDef ->
+    an MJCF folder ``out``; the format is detected unless ``format`` names it.
+
+    Returns a :class:`~holomj.jobs.compile.CompileReport`. Raises
+    :class:`~holomj.errors.FormatError` / :class:`~holomj.errors.SpecError` for bad input
+    (naming file and field), :class:`~holomj.errors.OutputExistsError`,
+    :class:`~holomj.errors.AssetNotFoundError`, :class:`~holomj.errors.CompileError`.
+    """
+    from holomj.jobs.compile import compile_file
+
+    return compile_file(
+        Path(source),
+        Path(out),
+        library_path=_library_root(library),
+        fmt=format,
+        overwrite=overwrite,
+        check_seconds=check_seconds,
+        robot=robot,
+        profile=profile,
+        seed=seed,
+    )
+
+
+def validate(
+    scene: Path | str,
+    *,
+    repair: bool = False,
+    furniture: Literal["free", "static", "as-is"] = "free",
+    sleep: bool = False,
+    tolerance_mm: float = 1.0,
+    monitor_s: float = 3.0,
+    settle_s: float = 5.0,
+) -> StabilityReport:
+    """``holomj validate``: audit ``scene`` (a holomj folder, its scene.xml, or any MJCF file)
+    at t = 0, settle it and judge every object by the stability rule.
+
+    Returns the :class:`~holomj.spec.report.StabilityReport` (``.ok``, ``.objects``, ...;
+    with ``repair``, ``.repaired`` and ``.unsaved``). Raises
+    :class:`~holomj.errors.InputError` for bad options or a repair of something that is not
+    a holomj folder, :class:`~holomj.errors.FormatError` when the scene cannot be loaded.
+    """
+    from holomj.jobs.validate import validate as validate_job
+    from holomj.spec.report import Thresholds
+
+    thresholds = Thresholds(
+        tolerance_m=tolerance_mm / 1000.0, monitor_s=monitor_s, settle_cap_s=settle_s
+    )
+    return validate_job(
+        Path(scene), thresholds=thresholds, furniture=furniture, sleep=sleep, repair=repair
+    )
+
+
+def render(
+    folder: Path | str,
+    *,
+    width: int = 640,
+    height: int = 480,
+    views: Sequence[str] = ("top", "rooms"),
+    depth: bool = False,
+    segmentation: bool = False,
+    shadows: bool = True,
+    report: bool = True,
+) -> Any:
+    """``holomj render``: ``folder/renders/`` (and ``folder/report.html`` unless ``report`` is
+    false), headless. Returns the render summary (files, cameras, timings). Raises
+    :class:`~holomj.errors.InputError` for a folder that is not a holomj scene and
+    :class:`~holomj.errors.HolomjError` when no OpenGL backend can render."""
+    from holomj.jobs.render import render_folder, write_report_html
+
+    summary = render_folder(
+        Path(folder),
+        width=width,
+        height=height,
+        views=tuple(views),
+        depth=depth,
+        segmentation=segmentation,
+        shadows=shadows,
+    )
+    if report:
+        write_report_html(Path(folder))
+    return summary
+
+
+def populate(
+    folder: Path | str,
+    on: str,
+    objects: str | list[tuple[str, int]],
+    *,
+    seed: int = 0,
+    library: Path | str | AssetLibrary | None = None,
+    max_attempts: int = 20,
+) -> PopulateResult:
+    """``holomj populate``: drop small objects (``"mug:2,book"`` or ``[("mug", 2)]``) onto the
+    receptacle ``on`` of ``folder`` and write the folder back. Returns what was placed
+    (``.placed``, ``.requested``, ``.report``). Raises :class:`~holomj.errors.InputError` for
+    an unknown receptacle or object, or a bad seed or attempt count."""
+    from holomj.jobs.populate import populate_folder
+
+    return populate_folder(
+        Path(folder),
+        on,
+        objects,
+        seed=seed,
+        library_path=_library_root(library),
+        max_attempts=max_attempts,
+    )
+
+
+def add_robot(
+    folder: Path | str,
+    robot: str,
+    *,
+    room: str | None = None,
+    seed: int = 0,
+    clearance: float | None = None,
+    replace: bool = False,
+    profile: Literal["default", "mjx"] = "default",
+) -> AddRobotResult:
+    """``holomj add-robot``: attach ``robot`` (``panda``, ``jaco`` or an MJCF path) to the scene
+    folder at a free floor spot. Raises :class:`~holomj.errors.InputError` for an unknown robot,
+    no free spot, or a folder that has a robot already (without ``replace``)."""
+    from holomj.jobs.add_robot import add_robot_to_folder
+
+    return add_robot_to_folder(
+        Path(folder),
+        robot,
+        seed=seed,
+        clearance=clearance,
+        room=room,
+        profile=profile,
+        replace=replace,
+    )

@@ -1,0 +1,226 @@
+"""``holomj assets ...``: import meshes into a library, list, show, remove, build the default
+(the jobs: :mod:`holomj.jobs.assets`, which import the asset pipeline when they run)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+from rich.markup import escape
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.table import Table
+
+from holomj.cli.options import JsonOption, LibraryOption, StrictOption
+from holomj.cli.output import emit_json, err_console, guard, library_root, out_console
+
+assets_app = typer.Typer(help="Manage asset libraries.", no_args_is_help=True)
+
+
+@assets_app.command("build-default")
+def build_default_command(
+    library: LibraryOption = None,
+    force: Annotated[bool, typer.Option("--force", help="Rebuild even if it is current.")] = False,
+) -> None:
+    """Build (or refresh) the procedural default library."""
+    from holomj.jobs.assets import build_default_library
+
+    built = guard(lambda: build_default_library(library, force=force))
+    out_console.print(
+        f"default library at {built.root}: {built.assets} assets ({built.seconds:.1f} s)"
+    )
+
+
+@assets_app.command("import")
+def import_command(
+    paths: Annotated[
+        list[Path], typer.Argument(metavar="PATH...", help="Mesh files or folders of them.")
+    ],
+    library: LibraryOption = None,
+    category: Annotated[
+        str | None, typer.Option(help="Category (default: guessed from the name).")
+    ] = None,
+    size: Annotated[
+        tuple[float, float, float] | None,
+        typer.Option(help="Rescale to this X Y Z size in metres."),
+    ] = None,
+    description: Annotated[str | None, typer.Option(help="Text description.")] = None,
+    mass: Annotated[
+        float | None, typer.Option("--mass", help="Mass in kg (default: density x volume).")
+    ] = None,
+    asset_id: Annotated[str | None, typer.Option("--id", help="Asset id (one file only).")] = None,
+    up: Annotated[
+        str | None,
+        typer.Option(help="Up axis of the file: y or z (default: y for glTF, z otherwise)."),
+    ] = None,
+    front: Annotated[str, typer.Option(help="Source axis the front faces: +x, -x, +y, -y.")] = "+x",
+    workers: Annotated[int, typer.Option(min=1, max=64, help="Parallel processes.")] = 1,
+    preset: Annotated[
+        str, typer.Option(help="CoACD settings: fast (seconds), default, fine (minutes).")
+    ] = "default",
+    threshold: Annotated[
+        float | None, typer.Option(help="CoACD concavity threshold (lower = more hulls).")
+    ] = None,
+    max_hulls: Annotated[int | None, typer.Option(help="CoACD maximum number of hulls.")] = None,
+    timeout: Annotated[
+        float | None, typer.Option(help="CoACD time limit per attempt, seconds.")
+    ] = None,
+    thumbnails: Annotated[
+        bool, typer.Option("--thumbnails/--no-thumbnails", help="Render thumbnails.")
+    ] = True,
+    accept_fallback: Annotated[
+        bool,
+        typer.Option(
+            "--accept-fallback",
+            help="Cache fallback decompositions (CoACD unavailable, crashed or timed out) as "
+            "final and reuse cached ones; without it the next import retries CoACD.",
+        ),
+    ] = False,
+    strict: StrictOption = False,
+    as_json: JsonOption = False,
+) -> None:
+    """Import meshes (GLB, glTF, OBJ, STL, PLY) as simulation-ready assets.
+
+    When CoACD is unavailable, crashes or times out, the asset gets a fallback decomposition
+    (coarser settings, else the single convex hull) and is reported as degraded: still added
+    to the library, marked in its derivation.json, but not cached unless --accept-fallback is
+    given, so the next import retries CoACD.
+
+    Exits with 0 when every file was imported (degraded ones included, unless --strict), 1 when
+    any failed (the others are kept).
+    """
+    from holomj.jobs.assets import import_assets
+
+    columns = (
+        TextColumn("[progress.description]{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+    )
+    with Progress(*columns, console=err_console, disable=as_json, transient=True) as progress:
+        task = progress.add_task("importing", total=None)
+        result = guard(
+            lambda: import_assets(
+                paths,
+                library=library,
+                asset_id=asset_id,
+                category=category,
+                size=size,
+                description=description,
+                mass_kg=mass,
+                up=up,
+                front=front,
+                preset=preset,
+                threshold=threshold,
+                max_hulls=max_hulls,
+                timeout_s=timeout,
+                workers=workers,
+                thumbnails=thumbnails,
+                accept_fallback=accept_fallback,
+                on_planned=lambda total: progress.update(task, total=total),
+                on_done=lambda outcome: progress.update(
+                    task, advance=1, description=outcome.asset_id
+                ),
+            )
+        )
+    summary = result.summary
+    if as_json:
+        emit_json(result.to_dict())
+    else:
+        _print_summary(result.library, summary, accept_fallback)
+    if summary.failed or (strict and summary.degraded):
+        raise typer.Exit(code=1)
+
+
+def _print_summary(root: Path, summary: Any, accept_fallback: bool) -> None:
+    """The import table, a warning line per degraded asset and the counts."""
+    table = Table(title=f"imported into {root}")
+    for column in ("asset", "result", "hulls", "mass kg", "s"):
+        table.add_column(column)
+    for o in summary.outcomes:
+        table.add_row(
+            o.asset_id,
+            _result_cell(o),
+            str(o.hulls or ""),
+            f"{o.mass_kg:.3f}" if o.mass_kg else "",
+            f"{o.seconds:.1f}",
+        )
+    out_console.print(table)
+    for o in summary.degraded:
+        out_console.print(
+            f"[yellow]warning: {escape(o.asset_id)}: ok (degraded: {escape(o.degraded_reason)}),"
+            f" {o.hulls} hull{'' if o.hulls == 1 else 's'}[/]"
+        )
+    if summary.degraded and not accept_fallback:
+        out_console.print(
+            "[yellow]degraded results are not cached: the next import retries CoACD "
+            "(--accept-fallback keeps them)[/]"
+        )
+    out_console.print(
+        f"{len(summary.succeeded)} imported, {len(summary.degraded)} degraded, "
+        f"{len(summary.failed)} failed"
+    )
+
+
+def _result_cell(outcome: Any) -> str:
+    """The result column of one import: ok or cached (yellow when degraded), or the error."""
+    if not outcome.ok:
+        return f"[red]failed[/]: {escape(outcome.error or '')}"
+    result = "cached" if outcome.cached else "ok"
+    return f"[yellow]{result} (degraded)[/]" if outcome.degraded else result
+
+
+@assets_app.command("list")
+def list_command(
+    library: LibraryOption = None,
+    category: Annotated[str | None, typer.Option(help="Only this category.")] = None,
+    as_json: JsonOption = False,
+) -> None:
+    """List the assets of a library (degraded: made from a fallback decomposition)."""
+    from holomj.jobs.assets import list_assets
+
+    root = library_root(library)
+    listing = guard(lambda: list_assets(root, category))
+    rows = listing.rows
+    if as_json:
+        emit_json(rows)
+        return
+    table = Table(title=f"{listing.name} ({listing.root}): {len(rows)} assets")
+    for column in ("id", "category", "size m", "mass kg", "placement", "surfaces", "colliders"):
+        table.add_column(column)
+    for r in rows:
+        table.add_row(
+            r["id"],
+            r["category"],
+            " x ".join(f"{v:.2f}" for v in r["size_m"]),
+            f"{r['mass_kg']:.2f}",
+            ",".join(r["placement"]),
+            str(r["surfaces"]),
+            f"{r['colliders']} [yellow](degraded)[/]" if r["degraded"] else str(r["colliders"]),
+        )
+    out_console.print(table)
+
+
+@assets_app.command("show")
+def show_command(
+    asset_id: Annotated[str, typer.Argument(metavar="ID")],
+    library: LibraryOption = None,
+) -> None:
+    """Print an asset's metadata (and how it was derived) as JSON."""
+    from holomj.jobs.assets import show_asset
+
+    root = library_root(library)
+    emit_json(guard(lambda: show_asset(root, asset_id)))
+
+
+@assets_app.command("remove")
+def remove_command(
+    asset_ids: Annotated[list[str], typer.Argument(metavar="ID...")],
+    library: LibraryOption = None,
+) -> None:
+    """Remove assets from a library."""
+    from holomj.jobs.assets import remove_assets
+
+    root = library_root(library)
+    guard(lambda: remove_assets(root, asset_ids))
+    out_console.print(f"removed {', '.join(asset_ids)} from {root}")

@@ -1,0 +1,101 @@
+"""``holomj compile INPUT -o OUT``: a scene or house file -> a self-contained MuJoCo package
+(the job: :mod:`holomj.jobs.compile`).
+
+Exit codes: 0 when OUT was written, 2 for bad input (OUT is then not created, and an existing
+OUT is untouched), 1 for a failure of ours.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from holomj.cli.options import (
+    JsonOption,
+    LibraryOption,
+    OutFolderOption,
+    OverwriteOption,
+    ProfileOption,
+    QuietOption,
+    RobotOption,
+    SeedOption,
+)
+from holomj.cli.output import emit_json, guard, library_root, out_console, spinner
+from holomj.importers.detect import FORMATS
+
+
+def compile_command(
+    input_path: Annotated[
+        Path,
+        typer.Argument(
+            metavar="INPUT",
+            help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.",
+        ),
+    ],
+    out: OutFolderOption,
+    fmt: Annotated[
+        str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
+    ] = None,
+    library: LibraryOption = None,
+    overwrite: OverwriteOption = False,
+    check_seconds: Annotated[
+        float,
+        typer.Option(
+            "--check-seconds",
+            min=0.0,
+            max=60.0,
+            help="Seconds to simulate as a smoke test (0 skips).",
+        ),
+    ] = 1.0,
+    robot: RobotOption = None,
+    profile: ProfileOption = "default",
+    seed: SeedOption = 0,
+    as_json: JsonOption = False,
+    quiet: QuietOption = False,
+) -> None:
+    """Compile a scene or house file into a self-contained MuJoCo package in OUT."""
+    from holomj.jobs.compile import compile_file
+
+    library_path = library_root(library)
+    with spinner(f"compiling {input_path}", show=not (quiet or as_json)):
+        report = guard(
+            lambda: compile_file(
+                input_path,
+                out,
+                library_path=library_path,
+                fmt=fmt,
+                overwrite=overwrite,
+                check_seconds=check_seconds,
+                robot=robot,
+                profile=profile,
+                seed=seed,
+            )
+        )
+    if as_json:
+        emit_json(report.to_dict())
+    elif not quiet:
+        scene, model = report.scene, report.model
+        out_console.print(
+            f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
+        )
+        out_console.print(
+            f"  {len(scene['rooms'])} rooms, {scene['walls']} walls, {scene['doors']} doors, "
+            f"{scene['windows']} windows, {scene['objects']} objects; "
+            f"{model['bodies']} bodies, {model['geoms']} geoms, {model['total_mass_kg']} kg"
+        )
+        if report.robot is not None:
+            x, y, _ = report.robot["position"]
+            out_console.print(
+                f"  robot {report.robot['name']} at ({x:.2f}, {y:.2f}), yaw "
+                f"{report.robot['yaw_deg']:.1f}°, in {report.robot['room']}"
+            )
+        if report.substitutions:
+            out_console.print(
+                f"  {len(report.substitutions)} assets substituted (see import_report.json)"
+            )
+        for warning in report.warnings:
+            out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
+        if report.sim_warnings:
+            out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")

@@ -1,0 +1,313 @@
+"""The report page: one self-contained HTML page about a scene, readable from ``file://``.
+
+Images are embedded as base64 ``data:`` URIs, so the page stands alone: it can be copied, mailed
+or kept as a CI artifact without the images beside it (or linked relatively instead, for a
+lighter page). No scripts, no external styles or fonts.
+
+Sections: verdict, plan, room views, close-ups, the object table (category, asset, size, mass,
+stable, moved and turned from the authored pose from the validation report when there is one,
+"not validated" otherwise), the validation details, the planner's notes, import notes and
+render facts. :func:`render_page` builds the text from data in memory; the render job
+(:mod:`holomj.jobs.render`) reads a folder's reports and renders and writes ``report.html``.
+"""
+
+from __future__ import annotations
+
+import base64
+from collections.abc import Mapping
+from html import escape
+from typing import Any
+
+from holomj.library.store import AssetLibrary
+from holomj.spec.plan import ScenePlan
+from holomj.spec.report import ObjectReport, StabilityReport
+from holomj.spec.scene import SceneObject, SceneSpec
+from holomj.version import __version__
+
+HEADER_COLOR = "#2c3e50"  # the table header; the browser test looks for it
+
+_CSS = f"""
+body {{ font-family: system-ui, -apple-system, "Segoe UI", sans-serif; margin: 24px;
+       color: #222; background: #fafafa; }}
+h1 {{ margin-bottom: 4px; }} h2 {{ margin-top: 28px; border-bottom: 1px solid #ccc; }}
+.sub {{ color: #555; margin-top: 0; }}
+.verdict {{ padding: 10px 14px; border-radius: 6px; font-weight: 600; display: inline-block; }}
+.ok {{ background: #d7f5dd; color: #145a22; }} .bad {{ background: #fbdcdc; color: #8a1111; }}
+.none {{ background: #eee; color: #444; }}
+.grid {{ display: flex; flex-wrap: wrap; gap: 14px; }}
+figure {{ margin: 0; background: white; padding: 6px; border: 1px solid #ddd;
+          display: inline-block; }}
+figure img {{ display: block; max-width: 100%; height: auto; }}
+figure.room img {{ width: 560px; }}
+figcaption {{ font-size: 13px; color: #444; padding-top: 4px; }}
+table {{ border-collapse: collapse; font-size: 13px; background: white; }}
+th {{ background: {HEADER_COLOR}; color: white; text-align: left; padding: 6px 8px; }}
+td {{ border-top: 1px solid #ddd; padding: 4px 8px; vertical-align: top; }}
+td.num {{ text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }}
+tr.unstable td {{ background: #fdeaea; }}
+ul {{ margin-top: 4px; }} code {{ background: #eee; padding: 0 3px; }}
+"""
+
+
+def render_page(
+    scene: SceneSpec,
+    library: AssetLibrary,
+    *,
+    report: StabilityReport | None = None,
+    plan: ScenePlan | None = None,
+    imported: Any = None,
+    manifest: Mapping[str, Any] | None = None,
+    images: Mapping[str, bytes | str] | None = None,
+) -> str:
+    """The HTML text of the page for ``scene``.
+
+    ``library`` gives the assets' category, size and mass; ``report``: the validation report,
+    ``plan``: the planner's plan, ``imported``: the import report (JSON data), ``manifest``: the
+    render summary (JSON form; None: not rendered yet). ``images`` maps the image paths the
+    manifest names to their PNG bytes (embedded as ``data:`` URIs) or to a URL to link them by;
+    images it lacks are left out.
+    """
+    images = images or {}
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{escape(scene.name)} — holomj report</title>",
+        f"<style>{_CSS}</style></head><body>",
+        f"<h1>{escape(scene.name)}</h1>",
+        f'<p class="sub">{_counts(scene)}</p>',
+        _verdict(report),
+        _images(manifest, images),
+        _object_table(scene, library, report),
+        _validation(report),
+        _plan_notes(plan),
+        _import_notes(imported),
+        _render_facts(manifest),
+        f'<p class="sub">holomj {escape(__version__)}</p>',
+        "</body></html>",
+    ]
+    return "\n".join(p for p in parts if p) + "\n"
+
+
+def manifest_images(manifest: Mapping[str, Any] | None) -> list[str]:
+    """The paths of the images the page shows from a render ``manifest``: plan, then views."""
+    if manifest is None:
+        return []
+    paths = [manifest["plan"]] if manifest.get("plan") else []
+    paths += [
+        v["image"]
+        for v in manifest.get("views", [])
+        if v.get("kind") in ("room", "object") and v.get("image")
+    ]
+    return paths
+
+
+def _counts(scene: SceneSpec) -> str:
+    text = (
+        f"{len(scene.rooms)} rooms, {len(scene.objects)} objects, {len(scene.doors)} doors, "
+        f"{len(scene.windows)} windows"
+    )
+    if scene.source:
+        text += f" · source: {scene.source}"
+    return escape(text)
+
+
+def _verdict(report: StabilityReport | None) -> str:
+    if report is None:
+        return (
+            '<p class="verdict none">Not validated: run <code>holomj validate OUT --json '
+            "OUT/report.json</code></p>"
+        )
+    c = report.counts
+    text = (
+        f"{c.get('stable', 0)}/{c.get('objects', len(report.objects))} objects stable, "
+        f"{len(report.penetrations)} penetrations at t = 0, "
+        f"{sum(report.warnings.values())} MuJoCo warnings"
+    )
+    label, css = ("Physically valid", "ok") if report.ok else ("Not valid", "bad")
+    return f'<p class="verdict {css}">{label}: {escape(text)}</p>'
+
+
+def _image_src(images: Mapping[str, bytes | str], path: str) -> str | None:
+    image = images.get(path)
+    if image is None:
+        return None
+    if isinstance(image, bytes):
+        return "data:image/png;base64," + base64.b64encode(image).decode("ascii")
+    return escape(image)
+
+
+def _figure(src: str | None, caption: str, css: str) -> str:
+    if src is None:
+        return ""
+    return (
+        f'<figure class="{css}"><img src="{src}" alt="{escape(caption)}">'
+        f"<figcaption>{escape(caption)}</figcaption></figure>"
+    )
+
+
+def _images(manifest: Mapping[str, Any] | None, images: Mapping[str, bytes | str]) -> str:
+    if manifest is None:
+        return (
+            "<h2>Views</h2><p>No renders yet: run <code>holomj render OUT</code> to add the "
+            "plan and the room views.</p>"
+        )
+    parts = []
+    plan = manifest.get("plan")
+    if plan:
+        parts += ["<h2>Plan</h2>", _figure(_image_src(images, plan), "plan", "plan")]
+    groups = [("room", "Rooms"), ("object", "Close-ups of receptacles")]
+    for kind, title in groups:
+        figures = [
+            _figure(_image_src(images, v["image"]), str(v.get("subject")), "room")
+            for v in manifest.get("views", [])
+            if v.get("kind") == kind
+        ]
+        if any(figures):
+            parts += [f"<h2>{title}</h2>", '<div class="grid">', *figures, "</div>"]
+    return "\n".join(parts)
+
+
+def _object_table(scene: SceneSpec, library: AssetLibrary, report: StabilityReport | None) -> str:
+    by_name = {o.name: o for o in report.objects} if report is not None else {}
+    heads = [
+        "object",
+        "room",
+        "category",
+        "asset",
+        "size w×d×h (m)",
+        "mass (kg)",
+        "kind",
+        "support",
+        "stable",
+        "moved (mm)",
+        "turned (°)",
+        "notes",
+    ]
+    rows = [
+        _object_row(obj, library, by_name.get(obj.id), report is not None) for obj in scene.objects
+    ]
+    if not rows:
+        return "<h2>Objects</h2><p>The scene has no objects.</p>"
+    head = "".join(f"<th>{escape(h)}</th>" for h in heads)
+    return (
+        f'<h2>Objects</h2><table id="objects"><thead><tr>{head}</tr></thead>'
+        f"<tbody>{''.join(rows)}</tbody></table>"
+    )
+
+
+def _object_row(
+    obj: SceneObject, library: AssetLibrary, result: ObjectReport | None, validated: bool
+) -> str:
+    category, size, mass = "?", "?", "?"
+    if obj.asset in library:
+        meta = library.get(obj.asset).meta
+        sx, sy, sz = obj.scale3
+        category = meta.category
+        size = f"{meta.size[0] * sx:.2f} × {meta.size[1] * sy:.2f} × {meta.size[2] * sz:.2f}"
+        kg = obj.mass_kg if obj.mass_kg is not None else meta.mass * sx * sy * sz
+        mass = f"{kg:.2f}"
+    if result is not None:
+        stable = "yes" if result.stable else "no"
+        # how far it ended from its authored pose (rule (b) of the stability rule)
+        drift = f"{result.displacement_m * 1000:.2f}"
+        rotation = f"{result.rotation_from_authored_deg:.2f}"
+        notes = "; ".join(result.reasons)
+    else:
+        stable = "not in report" if validated else "not validated"
+        drift = rotation = notes = "—"
+    # what the validation simulated, when known; else the scene's flag
+    free = result.dynamic if result is not None else not obj.static
+    css = ' class="unstable"' if result is not None and not result.stable else ""
+    cells = [
+        (obj.id, ""),
+        (obj.room or "—", ""),
+        (category, ""),
+        (obj.asset, ""),
+        (size, "num"),
+        (mass, "num"),
+        ("free" if free else "static", ""),
+        (obj.support or "floor", ""),
+        (stable, ""),
+        (drift, "num"),
+        (rotation, "num"),
+        (notes, ""),
+    ]
+    tds = "".join(
+        f'<td class="{c}">{escape(str(v))}</td>' if c else f"<td>{escape(str(v))}</td>"
+        for v, c in cells
+    )
+    return f"<tr{css}>{tds}</tr>"
+
+
+def _validation(report: StabilityReport | None) -> str:
+    if report is None:
+        return ""
+    items = [
+        f"furniture validated as: {report.furniture}",
+        f"settled: {'yes' if report.settled else 'no'} after {report.settle_time_s:.2f} s; "
+        f"monitored {report.monitor_s:.2f} s",
+        f"max penetration at t = 0: {report.max_penetration_m * 1000:.2f} mm; deepest contact "
+        f"while monitoring: {report.max_contact_depth_m * 1000:.2f} mm",
+        "held static (not put to the test): " + (", ".join(report.static_objects) or "none"),
+        f"{report.sim_time_s:.1f} s simulated in {report.wall_time_s:.1f} s "
+        f"({report.realtime_factor:.1f}× real time)",
+    ]
+    items += [
+        f"penetration {p.a} / {p.b}: {p.depth_m * 1000:.1f} mm ({p.geom_a} / {p.geom_b})"
+        for p in report.penetrations
+    ]
+    items += [f"below the floor: {d.name} (lowest z {d.value_m:.3f} m)" for d in report.below_floor]
+    items += [f"outside the rooms: {d.name} ({d.value_m:.3f} m away)" for d in report.outside_rooms]
+    items += [f"MuJoCo warning {name}: {count}" for name, count in sorted(report.warnings.items())]
+    items += [
+        f"repaired {a.name}: moved {a.moved_m * 1000:.1f} mm ({a.why})" for a in report.repaired
+    ]
+    items += [f"could not repair {u.name}: {u.why}" for u in report.unsaved]
+    lis = "".join(f"<li>{escape(i)}</li>" for i in items)
+    return f"<h2>Validation</h2><ul>{lis}</ul>"
+
+
+def _plan_notes(plan: ScenePlan | None) -> str:
+    if plan is None:
+        return ""
+    facts = [
+        f"prompt: {plan.prompt}",
+        f"planner: {plan.planner}, seed {plan.seed}, scene type {plan.scene_type}",
+    ]
+    if plan.scene_type_match:
+        facts.append(f"scene type chosen: {plan.scene_type_match}")
+    notes = "".join(f"<li>{escape(n)}</li>" for n in plan.notes) or "<li>none</li>"
+    head = "".join(f"<li>{escape(f)}</li>" for f in facts)
+    return f"<h2>Request and planner</h2><ul>{head}</ul><h3>Planner notes</h3><ul>{notes}</ul>"
+
+
+def _import_notes(imported: Any) -> str:
+    if not isinstance(imported, dict):
+        return ""
+    items = [f"format: {imported.get('format', '?')}"]
+    for sub in imported.get("substitutions") or []:
+        if isinstance(sub, dict):
+            items.append(
+                f"{sub.get('object_id')}: {sub.get('requested_asset')} replaced by "
+                f"{sub.get('used_asset')} ({sub.get('reason')})"
+            )
+    items += [f"warning: {w}" for w in imported.get("warnings") or []]
+    sim = imported.get("simulation_warnings") or {}
+    items += [f"smoke-run MuJoCo warning {k}: {v}" for k, v in sorted(sim.items())]
+    lis = "".join(f"<li>{escape(str(i))}</li>" for i in items)
+    return f"<h2>Import</h2><ul>{lis}</ul>"
+
+
+def _render_facts(manifest: Mapping[str, Any] | None) -> str:
+    if manifest is None:
+        return ""
+    options = manifest.get("options", {})
+    total = manifest.get("timings_s", {}).get("total")
+    text = (
+        f"rendered at {options.get('width')}×{options.get('height')} with "
+        f"MUJOCO_GL={manifest.get('backend')} ({manifest.get('gl_renderer')}), shadows "
+        f"{'on' if options.get('shadows') else 'off'}"
+    )
+    if total is not None:
+        text += f", {total:.2f} s"
+    return f'<p class="sub">{escape(text)}</p>'

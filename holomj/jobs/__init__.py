@@ -12,3 +12,9 @@
 
 Below this layer, stages take and return data in memory and never touch an output folder.
 """
+
+import os
+
+# Jobs may render: MuJoCo binds its OpenGL backend when it is first imported, so choose headless
+# EGL now, unless the user chose one (``import holomj`` alone sets nothing; running a job does).
+os.environ.setdefault("MUJOCO_GL", "egl")

@@ -411,6 +411,17 @@ class Thresholds:
     align_tolerance: float = 0.05
     edge_tolerance: float = 0.15
     middle_gap: float = 0.5
+    footprint_buffer: float = 0.05  # near/far: footprints grown by this per side (Holodeck)
+
+    @property
+    def near_raw_gap(self) -> float:
+        """'near' as a gap between the unbuffered footprints."""
+        return self.near + 2 * self.footprint_buffer
+
+    @property
+    def far_raw_gap(self) -> float:
+        """'far' as a gap between the unbuffered footprints."""
+        return self.far + 2 * self.footprint_buffer
 
 
 def relation_holds(
@@ -428,13 +439,14 @@ def relation_holds(
     """Whether object A (centre ``xa, ya``, yaw index ``ka``, ``(width, depth)``) stands in
     relation ``kind`` to target T. Vectorised over A's centre and over T's centre.
 
-    * near / far: the Euclidean gap between the footprints is ``<= near`` / ``>= far``;
+    * near / far: the Euclidean gap between the footprints, each grown by
+      ``footprint_buffer`` per side as Holodeck grows them, is ``<= near`` / ``>= far``;
     * in front of / behind: A's centre lies beyond T's front / back face, within T's width
       sideways, and at most ``in_front_max_gap`` away along T's axis;
     * side of: A's centre lies within T's depth band and beyond T's width (left or right);
       left of / right of: the same, on T's own left / right;
-    * center aligned: the centres share an x or a y (within ``align_tolerance``): Holodeck's
-      test, which is "on the target's front-back axis or on its left-right axis";
+    * center aligned: the centres share an x or a y, strictly closer than ``align_tolerance``:
+      Holodeck's test, which is "on the target's front-back axis or on its left-right axis";
     * face to: the ray from A's centre along A's front meets T's footprint;
     * face same as / face opposite to: equal / opposite yaw.
     """
@@ -447,9 +459,9 @@ def relation_holds(
         gx = np.maximum(np.abs(dx) - (hxa + hxt), 0.0)
         gy = np.maximum(np.abs(dy) - (hya + hyt), 0.0)
         gap = np.hypot(gx, gy)
-        return gap <= th.near + EPS if kind == "near" else gap >= th.far - EPS
+        return gap <= th.near_raw_gap + EPS if kind == "near" else gap >= th.far_raw_gap - EPS
     if kind == "center_aligned":
-        return np.minimum(np.abs(dx), np.abs(dy)) <= th.align_tolerance + EPS
+        return np.minimum(np.abs(dx), np.abs(dy)) < th.align_tolerance - EPS
     if kind == "face_same_as":
         return np.full(np.broadcast(dx, dy).shape, ka == kt)
     if kind == "face_opposite_to":

@@ -93,16 +93,26 @@ class LayoutSettings(FrozenModel):
         default=0.5, description="'middle': the footprint keeps at least this far from all walls."
     )
     near_m: Annotated[float, Field(gt=0.0, le=20.0)] = Field(
-        default=1.5, description="'near': footprint gap at most this (Holodeck's prompt: 150 cm)."
+        default=1.5,
+        description="'near': gap between the buffered footprints at most this (Holodeck's "
+        "prompt: 150 cm).",
     )
     far_m: Annotated[float, Field(gt=0.0, le=20.0)] = Field(
-        default=1.5, description="'far': footprint gap at least this (Holodeck's prompt: 150 cm)."
+        default=1.5,
+        description="'far': gap between the buffered footprints at least this (150 cm).",
+    )
+    footprint_buffer_m: Annotated[float, Field(ge=0.0, le=0.5)] = Field(
+        default=0.05,
+        description="'near'/'far': footprints are grown by this per side before measuring, as "
+        "Holodeck's solver grows them.",
     )
     in_front_max_gap_m: Annotated[float, Field(gt=0.0, le=50.0)] = Field(
         default=5.0, description="'in front of'/'behind': gap along the target's axis at most."
     )
     align_tolerance_m: Annotated[float, Field(ge=0.0, le=1.0)] = Field(
-        default=0.05, description="'center aligned': centres this close on x or on y."
+        default=0.05,
+        description="'center aligned': centres strictly closer than this on x or on y "
+        "(Holodeck's test); on the 5 cm grid that is exact alignment.",
     )
     front_clearance_m: Annotated[float, Field(ge=0.0, le=2.0)] = Field(
         default=0.3, description="Hard: the middle of an object's front face keeps this from walls."
@@ -338,6 +348,7 @@ class PreparedRoom:
             align_tolerance=s.align_tolerance_m,
             edge_tolerance=s.edge_tolerance_m,
             middle_gap=s.middle_gap_m,
+            footprint_buffer=s.footprint_buffer_m,
         )
         self.door_zones = []
         for door in problem.doors:
@@ -438,7 +449,8 @@ class PreparedRoom:
         if constraint.kind in ("near", "far"):
             gx, gy = geo.rect_gaps(self.footprint(i, x, y, k), self.footprint(j, xt, yt, kt))
             gap = math.hypot(max(gx, 0.0), max(gy, 0.0))
+            buffered = max(gap - 2 * th.footprint_buffer, 0.0)
             limit = th.near if constraint.kind == "near" else th.far
             sign = "<=" if constraint.kind == "near" else ">="
-            return ok, f"gap {gap:.2f} m (needs {sign} {limit:g} m)"
+            return ok, f"gap {buffered:.2f} m between buffered footprints (needs {sign} {limit:g} m)"
         return ok, "holds" if ok else "does not hold"

@@ -291,15 +291,15 @@ class _Model:
             m.add(gx >= -dx - sx).only_enforce_if(s)
             m.add(gy >= dy - sy).only_enforce_if(s)
             m.add(gy >= -dy - sy).only_enforce_if(s)
-            m.add(gx + gy <= prep.units_down(th.near)).only_enforce_if(s)
+            m.add(gx + gy <= prep.units_down(th.near_raw_gap)).only_enforce_if(s)
             # Tie-break: among layouts satisfying the same constraints, prefer gaps of at most
             # NEAR_PREFERRED_M (legroom between a sofa and its coffee table, say).
             self.near_gaps.append(
-                (s, gx + gy - prep.units_down(NEAR_PREFERRED_M), prep.units_down(th.near))
+                (s, gx + gy - prep.units_down(NEAR_PREFERRED_M), prep.units_down(th.near_raw_gap))
             )
             return
         if kind == "far":
-            f = prep.units_up(th.far)
+            f = prep.units_up(th.far_raw_gap)
             sx = self.half(a, 0, "up") + self.half(t, 0, "up")
             sy = self.half(a, 1, "up") + self.half(t, 1, "up")
             lits = [self._lit(f"{tag}f{q}") for q in range(4)]
@@ -310,7 +310,9 @@ class _Model:
             m.add_bool_or(lits).only_enforce_if(s)
             return
         if kind == "center_aligned":
-            tol = prep.units_down(th.align_tolerance)
+            # strictly closer than the tolerance (Holodeck's test): one unit less when it
+            # falls on the grid, so on the 5 cm grid that is exact alignment
+            tol = prep.units_up(th.align_tolerance) - 1
             lx, ly = self._lit(f"{tag}ax"), self._lit(f"{tag}ay")
             m.add(dx <= tol).only_enforce_if(lx)
             m.add(-dx <= tol).only_enforce_if(lx)

@@ -88,6 +88,22 @@ def test_front_faces_plus_x_at_yaw_zero() -> None:
     assert rel("face_opposite_to", 1.5, 0.0, ka=2, kt=0)
 
 
+def test_holodeck_semantics_of_alignment_and_distance() -> None:
+    """'center aligned' is strictly under 5 cm (Holodeck's ``< eps``): a 5 cm offset, the
+    grid's step, fails; 'near'/'far' measure between footprints grown by 5 cm per side."""
+    sofa, table = (2.0, 1.0), (1.0, 0.5)
+    rel = lambda kind, x, y: bool(  # noqa: E731
+        geo.relation_holds(kind, x, y, 0, table, 0.0, 0.0, 0, sofa, TH)
+    )
+    assert rel("center_aligned", 1.5, 0.0) and rel("center_aligned", 1.5, 0.049)
+    assert not rel("center_aligned", 1.5, 0.05)
+    # table (depth 0.5 along x at yaw 0: half 0.25) and sofa (half depth 0.5): x = gap + 0.75
+    assert not rel("far", 0.75 + 1.55, 0.0)  # raw gap 1.55 m: 1.45 m between buffered ones
+    assert rel("far", 0.75 + 1.65, 0.0)
+    assert rel("near", 0.75 + 1.55, 0.0)  # within 1.5 m once both are grown by 5 cm
+    assert not rel("near", 0.75 + 1.65, 0.0)
+
+
 def test_edge_means_back_to_the_wall() -> None:
     walls = geo.room_walls([(0, 0), (4, 0), (4, 3), (0, 3)])
     size = (2.0, 0.9)  # width, depth

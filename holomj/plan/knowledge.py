@@ -3,22 +3,25 @@
 The knowledge is data, in ``holomj/data/knowledge/*.json``; this module only defines its schema,
 loads it and checks that its parts agree:
 
-* ``objects.json``: object kinds (plan names such as ``"dining chair"``) with a library category,
-  a size (width, depth, height in metres), optional small/large sizes, placement (floor, wall,
-  or ``object`` for small objects that go on receptacles), the words that name them in a prompt,
-  and default layout constraints; ``generics`` (``"chair"``: the kinds it may mean) and
-  ``refused`` (things the planner never plans, and why).
+* ``objects.json``: object kinds (plan names such as ``"dining chair"``) with a category (the
+  default library's, else a new one equal to the kind's name in snake_case), a size (width,
+  depth, height in metres, within sane ranges for its placement), optional small/large sizes,
+  placement (floor, wall, ceiling, or ``object`` for small objects that go on receptacles), the
+  words that name them in a prompt, whether small objects go on it (``receptacle``), the room
+  templates it belongs in (``rooms``) and default layout constraints; ``generics``
+  (``"chair"``: the kinds it may mean) and ``refused`` (things the planner never plans, and
+  why).
 * ``rooms.json``: room templates: floor-plan type, typical area, materials, the objects with
   quantity ranges, probabilities, priorities and what goes on top of them, layout constraints
-  (the layout language's text form over object kind names) and alternative object sets
-  (``variants``).
+  (the layout language's text form over object kind names), alternative object sets
+  (``variants``) and the ``defining`` kinds that make the room what it is (never dropped).
 * ``scene_types.json``: scene types (residential and commercial) with a description, keywords,
   their rooms (count ranges, adjacency wishes) and entrance; ``limits`` (what a room may hold).
 * ``styles.json``: style words with materials and wall heights; material words (``oak``,
   ``white``, ``brick``) and how each surface describes them.
 * ``receptacles.json`` (optional): small-object lists for receptacles that the shared table
   ``holomj/data/small_objects_on_receptacles.json`` lacks (that table wins where it has an
-  entry). The shipped knowledge base has none: it uses the shared table.
+  entry): the new receptacle categories and ``room type:category`` keys of new room types.
 
 :func:`knowledge_base` returns the shipped knowledge (cached); :func:`load_knowledge` reads any
 folder of the same files. A broken file raises :class:`~holomj.errors.SpecError` naming the file
@@ -54,6 +57,18 @@ Probability = Annotated[float, Field(ge=0.0, le=1.0)]
 Area = Annotated[float, Field(ge=1.0, le=400.0)]
 Height = Annotated[float, Field(ge=2.2, le=6.0)]
 MaterialText = Annotated[str, Field(min_length=1, max_length=200)]
+Category = Annotated[str, Field(min_length=1, max_length=64, pattern=r"^[a-z0-9]+(_[a-z0-9]+)*$")]
+Placement = Literal["floor", "wall", "ceiling", "object"]
+
+# Sane (width, depth, height) ranges in metres, per placement: sizes outside are data errors.
+SIZE_RANGES: dict[str, tuple[tuple[float, float], tuple[float, float], tuple[float, float]]] = {
+    "floor": ((0.1, 6.0), (0.05, 6.0), (0.01, 4.0)),
+    "wall": ((0.05, 5.0), (0.01, 1.0), (0.05, 3.0)),
+    "ceiling": ((0.05, 4.0), (0.05, 4.0), (0.02, 2.0)),
+    "object": ((0.005, 1.0), (0.005, 1.0), (0.005, 1.0)),
+}
+MAX_FOOTPRINT_M2 = 16.0  # one floor object's width x depth
+DEFINING_PRIORITY = 8  # the lowest priority a defining kind may have in its template
 
 
 def _ordered_range(value: tuple[float, float], what: str) -> None:
@@ -66,10 +81,10 @@ def _ordered_range(value: tuple[float, float], what: str) -> None:
 
 
 class ObjectKind(FrozenModel):
-    """A kind of object the planner knows: its library category, size and names in prompts."""
+    """A kind of object the planner knows: its category, size, names in prompts and rooms."""
 
-    category: str = Field(min_length=1, max_length=64)
-    placement: Literal["floor", "wall", "object"]
+    category: Category
+    placement: Placement
     size: Size3 | None = Field(default=None, description="(width, depth, height) in metres.")
     small: Size3 | None = None
     large: Size3 | None = None
@@ -84,13 +99,23 @@ class ObjectKind(FrozenModel):
         description="Default layout lines over kind names, for rooms "
         "whose template says nothing about this kind.",
     )
+    receptacle: bool = Field(
+        description="Small objects go on it (its category has a receptacle table entry)."
+    )
+    rooms: list[Identifier] = Field(
+        min_length=1, description="Room templates (rooms.json) this kind belongs in."
+    )
 
     @model_validator(mode="after")
     def _check(self) -> ObjectKind:
         if self.placement != "object" and self.size is None:
-            raise ValueError("floor and wall objects need a size")
+            raise ValueError("floor, wall and ceiling objects need a size")
+        if self.size is None and (self.small is not None or self.large is not None):
+            raise ValueError("small and large sizes need a default size")
         if self.placement != "floor" and self.constraints:
             raise ValueError("only floor objects take layout constraints")
+        if self.receptacle and self.placement != "floor":
+            raise ValueError("only floor objects are receptacles")
         return self
 
     def size_for(self, word: str | None) -> tuple[float, float, float] | None:
@@ -196,11 +221,19 @@ class RoomTemplate(FrozenModel):
     objects: list[TemplateObject] = Field(default_factory=list)
     constraints: list[str] = Field(default_factory=list)
     variants: list[RoomVariant] = Field(default_factory=list)
+    defining: list[ObjectName] = Field(
+        description="Kinds that make the room what it is: never dropped when it is too full."
+    )
 
     @model_validator(mode="after")
     def _check(self) -> RoomTemplate:
         _ordered_range(self.area, "area")
         return self
+
+    def defining_in(self, names: Iterable[str]) -> list[str]:
+        """The defining kinds among ``names`` (a room's objects), in template order."""
+        present = set(names)
+        return [name for name in self.defining if name in present]
 
     def object_sets(self) -> list[tuple[str, list[TemplateObject], list[str]]]:
         """(variant name, objects, constraint lines) of every variant (or the base alone)."""
@@ -387,6 +420,14 @@ class KnowledgeBase(FrozenModel):
                 allowed.update(name for name, _ in items)
         return allowed
 
+    def kinds_in_room(self, template: str, placement: str | None = None) -> list[str]:
+        """Object kinds that belong in a room template (their ``rooms``), in file order."""
+        return [
+            name
+            for name, kind in self.objects.items()
+            if template in kind.rooms and (placement is None or kind.placement == placement)
+        ]
+
     def kinds_of_category(self, category: str, placement: str) -> list[str]:
         """Object kinds of a category and placement, in file order."""
         return [
@@ -455,6 +496,7 @@ def _data(texts: Mapping[str, str], name: str) -> Any:
 
 def check_knowledge(kb: KnowledgeBase) -> None:
     """Raise a SpecError for the first disagreement between the knowledge files."""
+    _check_sizes(kb)
     _check_objects(kb)
     _check_phrases(kb)
     for name, template in kb.rooms.items():
@@ -470,10 +512,75 @@ def _unknown(name: str, known: Iterable[str], what: str, where: str) -> SpecErro
     )
 
 
+def _check_sizes(kb: KnowledgeBase) -> None:
+    """Sizes within the sane ranges of their placement; small <= default <= large."""
+    for name, kind in kb.objects.items():
+        ranges = SIZE_RANGES[kind.placement]
+        sizes = {"size": kind.size, "small": kind.small, "large": kind.large}
+        for key, size in sizes.items():
+            if size is None:
+                continue
+            where = f"objects.json: objects.{name}.{key}"
+            for axis, value, (low, high) in zip(("width", "depth", "height"), size, ranges):
+                if not low <= value <= high:
+                    raise SpecError(
+                        f"{axis} {value:g} m is outside the sane range {low:g}-{high:g} m "
+                        f"for {kind.placement} objects",
+                        where=where,
+                    )
+            if kind.placement == "floor" and size[0] * size[1] > MAX_FOOTPRINT_M2:
+                raise SpecError(
+                    f"footprint {size[0] * size[1]:.1f} m2 is larger than {MAX_FOOTPRINT_M2:g} m2",
+                    where=where,
+                )
+        if kind.size is None:
+            continue
+        default = _measures(kind.placement, kind.size)
+        for key, size, sign in (("small", kind.small, -1), ("large", kind.large, 1)):
+            if size is None:
+                continue
+            measures = _measures(kind.placement, size)
+            if all(sign * (m - d) < 0 for m, d in zip(measures, default)):
+                relation = "smaller" if sign > 0 else "larger"
+                raise SpecError(
+                    f"the {key} size {list(size)} is {relation} than the default size "
+                    f"{list(kind.size)} (in area and in volume)",
+                    where=f"objects.json: objects.{name}.{key}",
+                )
+
+
+def _measures(placement: str, size: tuple[float, float, float]) -> tuple[float, float]:
+    """(visible area, volume) of a size: the face of wall objects, else the footprint."""
+    width, depth, height = size
+    area = width * height if placement == "wall" else width * depth
+    return area, width * depth * height
+
+
 def _check_objects(kb: KnowledgeBase) -> None:
     floor = {n for n, k in kb.objects.items() if k.placement == "floor"}
+    receptacles = _receptacle_categories(kb)
     for name, kind in kb.objects.items():
         where = f"objects.json: objects.{name}"
+        for room in kind.rooms:
+            if room not in kb.rooms:
+                raise _unknown(room, kb.rooms, "room template", f"{where}.rooms")
+        if len(set(kind.rooms)) != len(kind.rooms):
+            repeated = next(r for r in kind.rooms if kind.rooms.count(r) > 1)
+            raise SpecError(f"room template {repeated!r} listed twice", where=f"{where}.rooms")
+        has_table = kind.placement == "floor" and kind.category in receptacles
+        if kind.receptacle and not has_table:
+            raise SpecError(
+                f"marked receptacle, but the receptacle table lists no small objects for "
+                f"category {kind.category!r}",
+                where=f"{where}.receptacle",
+                fix="add the category to receptacles.json or set receptacle to false",
+            )
+        if has_table and not kind.receptacle:
+            raise SpecError(
+                f"the receptacle table lists small objects for category {kind.category!r}: "
+                "set receptacle to true",
+                where=f"{where}.receptacle",
+            )
         if kind.placement == "object" and not any(
             kind.category in kb.allowed_small(rec) for rec in _receptacle_categories(kb)
         ):
@@ -515,7 +622,7 @@ def _check_phrases(kb: KnowledgeBase) -> None:
             if phrase in owners and owners[phrase] != owner:
                 raise SpecError(
                     f"the phrase {phrase!r} names both {owners[phrase]} and {owner}",
-                    where="knowledge base",
+                    where=f"{owner}.aliases",
                     fix="keep each alias in one place",
                 )
             owners[phrase] = owner
@@ -556,8 +663,63 @@ def _check_template(kb: KnowledgeBase, name: str, template: RoomTemplate) -> Non
             raise SpecError(f"object {dupes[0]!r} listed twice", where=here)
         for i, entry in enumerate(objects):
             _check_entry(kb, template.type, entry, names, f"{here}.objects[{i}]")
+            _check_belongs(kb, name, entry)
         floor = [n for n in names if kb.objects[n].placement == "floor"]
         _check_lines(lines, floor, f"{here}.constraints")
+    _check_defining(kb, name, template)
+
+
+def _check_belongs(kb: KnowledgeBase, template: str, entry: TemplateObject) -> None:
+    """A kind a template lists (on the floor, a wall or a receptacle) names it in its rooms."""
+    listed = [entry.object]
+    if isinstance(entry.on_top, list):
+        listed += [item.object for item in entry.on_top]
+    for name in listed:
+        if template not in kb.objects[name].rooms:
+            raise SpecError(
+                f"rooms.json: rooms.{template} lists {name!r}, but {template!r} is not in its "
+                "rooms",
+                where=f"objects.json: objects.{name}.rooms",
+            )
+
+
+def _check_defining(kb: KnowledgeBase, name: str, template: RoomTemplate) -> None:
+    """Defining kinds: known floor or wall kinds the template always has when it lists them."""
+    where = f"rooms.json: rooms.{name}.defining"
+    if len(set(template.defining)) != len(template.defining):
+        repeated = next(k for k in template.defining if template.defining.count(k) > 1)
+        raise SpecError(f"defining kind {repeated!r} listed twice", where=where)
+    kinds = template.kinds()
+    for kind_name in template.defining:
+        kind = kb.objects.get(kind_name)
+        if kind is None:
+            raise _unknown(kind_name, kb.objects, "object kind", where)
+        if kind.placement not in ("floor", "wall"):
+            raise SpecError(
+                f"defining kind {kind_name!r} is a {kind.placement} object: only floor and wall "
+                "objects define a room",
+                where=where,
+            )
+        if kind_name not in kinds:
+            raise _unknown(kind_name, kinds, "object of this template", where)
+    for variant, objects, _ in template.object_sets():
+        here = where if variant == "base" else f"{where} (variant {variant!r})"
+        by_name = {o.object: o for o in objects}
+        for kind_name in template.defining_in(by_name):
+            entry = by_name[kind_name]
+            if entry.priority < DEFINING_PRIORITY or entry.probability < 1.0:
+                raise SpecError(
+                    f"defining kind {kind_name!r} has priority {entry.priority} and probability "
+                    f"{entry.probability:g}: it needs priority >= {DEFINING_PRIORITY} and "
+                    "probability 1",
+                    where=here,
+                )
+            for anchor, what in ((entry.per, "counts per"), (entry.above, "hangs above")):
+                if anchor is not None and anchor not in template.defining:
+                    raise SpecError(
+                        f"defining kind {kind_name!r} {what} {anchor!r}, which is not defining",
+                        where=here,
+                    )
 
 
 def _check_entry(
@@ -578,6 +740,10 @@ def _check_entry(
     if entry.per is not None and entry.per not in names:
         raise _unknown(entry.per, names, "object of this room", f"{where}.per")
     if entry.on_top is not None:
+        if not kind.receptacle:
+            raise SpecError(
+                f"{entry.object!r} is not a receptacle (receptacle: false)", where=f"{where}.on_top"
+            )
         choices = kb.small_choices(room_type, kind.category)
         if not choices:
             raise SpecError(f"{kind.category!r} is not a receptacle", where=f"{where}.on_top")
@@ -641,6 +807,8 @@ def _check_scene(kb: KnowledgeBase, name: str, scene: SceneType) -> None:
 
 
 __all__ = [
+    "DEFINING_PRIORITY",
+    "SIZE_RANGES",
     "Generic",
     "KnowledgeBase",
     "Limits",

@@ -32,18 +32,25 @@ from holomj.jobs.folder import (
 from holomj.jobs.plan import PlanOptions, check_planner, make_plan
 from holomj.jobs.stage_log import Listener, StageLog
 from holomj.layout.house_shell import build_shell
-from holomj.layout.room_furnishing import RoomContext, furnish_room, retrieve_room
+from holomj.layout.room_furnishing import (
+    RoomContext,
+    RoomFurniture,
+    furnish_room,
+    retrieve_room,
+)
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, check_profile, compile_scene
 from holomj.physics.small_object_drops import drop_small_objects
 from holomj.seeds import stage_rng
 from holomj.spec.materials import BUILTIN_MATERIALS
-from holomj.spec.plan import ScenePlan
+from holomj.spec.plan import PlanRoom, ScenePlan
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
 from holomj.spec.walls import derive_walls
 
 MAX_PROMPT_CHARS = 2000
+GROWTH = 1.25  # a room grows by this factor in area when its defining furniture does not fit
+MAX_GROWTH = 2
 FURNITURE_MODES = ("free", "static")
 
 
@@ -235,31 +242,32 @@ class _Run:
             self.log.info("retrieve", f"{picked} asset(s) chosen")
 
     def layout_stage(self) -> None:
-        plan, log = self.plan, self.log
+        """Floor plan, openings and furniture. A room whose defining furniture does not fit
+        even with its windows moved, and whose size the request left open, grows (up to
+        ``MAX_GROWTH`` times by ``GROWTH`` in area) and the house is laid out again."""
+        log = self.log
         with log.stage("layout"):
-            shell = build_shell(plan, self.seed, self.pick_material)
-            for warning in shell.warnings:
-                log.info("layout", f"warning: {warning}")
-            context = RoomContext(
-                walls=derive_walls(shell.rooms),
-                doors=shell.doors,
-                windows=shell.windows,
-                wall_height=plan.wall_height,
-                wall_thickness=SceneSpec.model_fields["wall_thickness"].default,
-            )
-            rooms = {r.id: r for r in shell.rooms}
-            self.furnished = []
-            for plan_room in plan.rooms:
-                done = furnish_room(
-                    plan_room,
-                    rooms[plan_room.id],
-                    context,
-                    self.assets[plan_room.id],
-                    self.library,
-                    self.seed,
-                    time_limit_s=self.options.layout_time_s,
-                )
-                self.furnished.append(done)
+            plan, grown = self.plan, []
+            for _ in range(MAX_GROWTH + 1):
+                shell, furnished = self._lay_out(plan)
+                short = [
+                    room
+                    for room, done in zip(plan.rooms, furnished)
+                    if room.size is None
+                    and room.area_m2 is not None
+                    and _missing_defining(room, done)
+                ]
+                if not short or len(grown) >= MAX_GROWTH:
+                    break
+                plan, change = _grow(plan, short)
+                grown.append(change)
+                log.info("layout", f"changed the plan: {change}; laying out again")
+            if grown:
+                self.plan = plan
+                furnished[0].changes[:0] = grown
+            for done in furnished:
+                for change in done.changes:
+                    log.info("layout", f"changed the plan: {change}")
                 lay = done.layout
                 log.info(
                     "layout",
@@ -272,17 +280,48 @@ class _Run:
                     log.info(
                         "layout", f"{done.room_id}: not placed: {item['object']}: {item['reason']}"
                     )
+            self.furnished = furnished
+            # each room's windows as its furnishing left them (a window may have moved)
+            order = {w.id: i for i, w in enumerate(shell.windows)}
+            windows = sorted((w for r in furnished for w in r.windows), key=lambda w: order[w.id])
             self.shell = shell
             self.scene = SceneSpec(
                 name=scene_name(self.prompt),
                 wall_height=plan.wall_height,
                 rooms=shell.rooms,
                 doors=shell.doors,
-                windows=shell.windows,
-                objects=[o for r in self.furnished for o in r.objects],
+                windows=windows,
+                objects=[o for r in furnished for o in r.objects],
                 materials={n: m for n, m in shell.materials.items() if n not in BUILTIN_MATERIALS},
                 source=f"holomj generate (seed {self.seed}): {self.prompt}",
             )
+
+    def _lay_out(self, plan: ScenePlan) -> tuple[Any, list[RoomFurniture]]:
+        """The house shell of ``plan`` and every room furnished in it."""
+        shell = build_shell(plan, self.seed, self.pick_material)
+        for warning in shell.warnings:
+            self.log.info("layout", f"warning: {warning}")
+        context = RoomContext(
+            walls=derive_walls(shell.rooms),
+            doors=shell.doors,
+            windows=shell.windows,
+            wall_height=plan.wall_height,
+            wall_thickness=SceneSpec.model_fields["wall_thickness"].default,
+        )
+        rooms = {r.id: r for r in shell.rooms}
+        furnished = [
+            furnish_room(
+                plan_room,
+                rooms[plan_room.id],
+                context,
+                self.assets[plan_room.id],
+                self.library,
+                self.seed,
+                time_limit_s=self.options.layout_time_s,
+            )
+            for plan_room in plan.rooms
+        ]
+        return shell, furnished
 
     def small_objects_stage(self) -> None:
         with self.log.stage("small_objects"):
@@ -390,8 +429,44 @@ class _Run:
                 "small_objects": small.placed,
                 "objects": len(scene.objects),
             },
-            "notes": [*self.plan.notes, *self.retriever.notes, *self.shell.warnings],
+            "notes": [
+                *self.plan.notes,
+                *self.retriever.notes,
+                *self.shell.warnings,
+                *(c for r in furnished for c in r.changes),
+            ],
+            "plan_changes": [c for r in furnished for c in r.changes],
         }
+
+
+def _missing_defining(room: PlanRoom, done: RoomFurniture) -> list[str]:
+    """The defining floor instances of ``room`` its furnishing could not place."""
+    unplaced = {u["object"] for u in done.unplaced}
+    return [
+        instance
+        for obj in room.objects
+        if obj.defining and obj.placement == "floor"
+        for instance in obj.instances()
+        if instance in unplaced
+    ]
+
+
+def _grow(plan: ScenePlan, rooms: list[PlanRoom]) -> tuple[ScenePlan, str]:
+    """``plan`` with ``rooms`` grown by ``GROWTH`` in area, and what changed, in words."""
+    grown = {r.id for r in rooms}
+    new_rooms = [
+        r.model_copy(update={"area_m2": round(r.area_m2 * GROWTH, 1)})
+        if r.id in grown and r.area_m2 is not None
+        else r
+        for r in plan.rooms
+    ]
+    words = ", ".join(
+        f"{r.id} from {r.area_m2:.1f} to {r.area_m2 * GROWTH:.1f} m² so that its "
+        f"{', '.join(sorted({o.name for o in r.objects if o.defining}))} fits"
+        for r in rooms
+        if r.area_m2 is not None
+    )
+    return plan.model_copy(update={"rooms": new_rooms}), f"grew {words}"
 
 
 def _render(

@@ -16,7 +16,7 @@ retrieved or placed is reported with the reason; nothing is dropped silently.
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -33,7 +33,14 @@ from holomj.layout.room_problem import (
     RoomProblem,
 )
 from holomj.layout.solve import LayoutResult, Placement, solve_room
-from holomj.layout.wall_objects import FloorItem, WallObjectRequest, place_wall_objects
+from holomj.layout.wall_objects import (
+    ABOVE_GAP_M,
+    OPENING_MARGIN_M,
+    FloorItem,
+    WallObjectRequest,
+    place_wall_objects,
+)
+from holomj.layout.window_moves import raise_sill, relocate_window
 from holomj.library.store import AssetLibrary
 from holomj.seeds import stage_rng
 from holomj.spec.plan import PlanObject, PlanRoom, instance_name
@@ -41,6 +48,8 @@ from holomj.spec.scene import Door, Room, SceneObject, Window
 from holomj.spec.walls import Wall
 
 LAYOUT_MARGIN_M = 0.03  # beyond half the interior wall thickness
+DEFINING_PRIORITY = 100  # a room's defining furniture outweighs every optional object
+REQUESTED_PRIORITY = 10
 # The layout keeps a walkway this wide (radius) between every two doors of a room: 5 cm more than
 # the navigation map's agent, so that its finer grid and real collider boxes still find the path.
 WALKER_RADIUS_M = 0.3
@@ -66,6 +75,7 @@ WALL_KINDS = {
     "wall_cabinet": "wall_cabinet",
     "shelf": "shelf",
     "television": "television",
+    "wall_television": "television",
 }
 
 
@@ -115,6 +125,8 @@ class RoomFurniture:
     unplaced: list[dict[str, str]] = field(default_factory=list)
     layout: dict[str, Any] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    windows: list[Window] = field(default_factory=list)  # the room's windows, after any move
+    changes: list[str] = field(default_factory=list)  # what the plan changed to fit, and why
 
 
 def object_id(room_id: str, instance: str) -> str:
@@ -136,6 +148,7 @@ class RoomAssets:
     room_id: str
     floor: dict[str, str] = field(default_factory=dict)
     wall: dict[str, str] = field(default_factory=dict)
+    ceiling: dict[str, str] = field(default_factory=dict)
     picks: list[dict[str, Any]] = field(default_factory=list)
     failed: list[dict[str, str]] = field(default_factory=list)
 
@@ -148,6 +161,7 @@ def retrieve_room(
     rng = stage_rng(seed, "retrieve", plan_room.id)
     out.floor = _retrieve(plan_room, "floor", chooser, rng, out)
     out.wall = _retrieve(plan_room, "wall", chooser, rng, out)
+    out.ceiling = _retrieve(plan_room, "ceiling", chooser, rng, out)
     return out
 
 
@@ -162,15 +176,28 @@ def furnish_room(
     time_limit_s: float = 1.0,
 ) -> RoomFurniture:
     """Lay out the retrieved floor ``assets`` of ``plan_room`` in ``room`` and hang its wall
-    objects."""
+    objects.
+
+    Defining furniture goes first (it outweighs every optional object in the solver). When it
+    still does not fit, a window that keeps it out is moved to a free stretch of exterior wall,
+    or left out when there is none; ``changes`` says what moved and why."""
     out = RoomFurniture(room.id, picks=list(assets.picks), unplaced=list(assets.failed))
-    problem = _problem(plan_room, room, context, assets.floor, library)
-    result = solve_room(
-        problem,
-        solver="cpsat",
-        time_limit_s=time_limit_s,
-        rng=stage_rng(seed, "layout", room.id),
+    windows = [w for w in context.windows if room.id in w.rooms]
+
+    def solve(room_windows: list[Window]) -> LayoutResult:
+        problem = _problem(plan_room, room, context, room_windows, assets, library)
+        return solve_room(
+            problem,
+            solver="cpsat",
+            time_limit_s=time_limit_s,
+            rng=stage_rng(seed, "layout", room.id),
+        )
+
+    result = solve(windows)
+    windows, result = _make_room_for_defining(
+        plan_room, room, context, assets.floor, library, windows, result, solve, out
     )
+    out.windows = windows
     out.layout = _layout_record(result)
     out.warnings.extend(result.warnings)
     by_name = {o.name: o for o in plan_room.objects}
@@ -195,8 +222,133 @@ def furnish_room(
         plan_obj = by_name[instance.rsplit("-", 1)[0]]
         if plan_obj.on_top:
             out.receptacles.append((oid, plan_obj))
-    _hang(plan_room, room, context, assets.wall, floor_items, library, seed, out)
+    _hang(plan_room, room, context, windows, assets.wall, floor_items, library, seed, out)
+    _hang_from_ceiling(plan_room, room, context, assets.ceiling, floor_items, library, out)
     return out
+
+
+def _hang_from_ceiling(
+    plan_room: PlanRoom,
+    room: Room,
+    context: RoomContext,
+    assets: dict[str, str],
+    floor_items: list[FloorItem],
+    library: AssetLibrary,
+    out: RoomFurniture,
+) -> None:
+    """Ceiling objects (pendants, chandeliers, fans) hang with their top at the ceiling: over
+    the floor object they are ``above`` (a dining table), else spread along the room's long
+    axis through its centre. Static, like the ceiling."""
+    centres = {f.id: f.footprint.centroid for f in floor_items}
+    polygon = Polygon(room.polygon)
+    minx, miny, maxx, maxy = polygon.bounds
+    for obj in plan_room.objects:
+        if obj.placement != "ceiling":
+            continue
+        instances = [i for i in obj.instances() if i in assets]
+        for k, instance in enumerate(instances):
+            meta = library.get(assets[instance]).meta
+            target = object_id(room.id, instance_name(obj.above, 0)) if obj.above else None
+            if target in centres:
+                x, y = centres[target].x, centres[target].y
+            else:
+                f = (k + 1) / (len(instances) + 1)
+                c = (
+                    polygon.representative_point()
+                    if not polygon.centroid.within(polygon)
+                    else polygon.centroid
+                )
+                if maxx - minx >= maxy - miny:
+                    x, y = minx + f * (maxx - minx), c.y
+                else:
+                    x, y = c.x, miny + f * (maxy - miny)
+            z = max(context.wall_height - meta.size[2], 0.0)
+            out.objects.append(
+                SceneObject(
+                    id=object_id(room.id, instance),
+                    asset=assets[instance],
+                    position=(round(x, 4), round(y, 4), round(z, 4)),
+                    static=True,
+                    room=room.id,
+                )
+            )
+
+
+def _make_room_for_defining(
+    plan_room: PlanRoom,
+    room: Room,
+    context: RoomContext,
+    floor_assets: dict[str, str],
+    library: AssetLibrary,
+    windows: list[Window],
+    result: LayoutResult,
+    solve: Callable[[list[Window]], LayoutResult],
+    out: RoomFurniture,
+) -> tuple[list[Window], LayoutResult]:
+    """Windows moved (or left out) so that the room's defining furniture fits; see
+    :mod:`holomj.layout.window_moves`."""
+    defining = {
+        instance
+        for obj in plan_room.objects
+        if obj.defining and obj.placement == "floor"
+        for instance in obj.instances()
+        if instance in floor_assets
+    }
+    missing = defining - set(result.placements)
+    if not missing or not windows:
+        return windows, result
+    # Take windows out, widest first, until the defining furniture fits (or none is left).
+    kept, removed, best = list(windows), [], None
+    for window in sorted(windows, key=lambda w: (-w.width, w.id)):
+        kept = [w for w in kept if w.id != window.id]
+        removed.append(window)
+        trial = solve(kept)
+        if not defining - set(trial.placements):
+            best = trial
+            break
+    if best is None:  # even without windows it does not fit: nothing to gain by moving them
+        return windows, result
+    result, missing = best, set()
+    heights = {i: library.get(a).meta.size[2] for i, a in floor_assets.items()}
+    doors = [d for d in context.doors if room.id in d.rooms]
+    names = ", ".join(sorted(defining - missing))
+    for window in removed:
+        tall = [
+            _footprint(p) for i, p in result.placements.items() if heights[i] > window.base_height
+        ]
+        moved = relocate_window(
+            window, room.id, Polygon(room.polygon), context.walls, doors, kept, tall
+        )
+        if moved is not None:
+            kept.append(moved)
+            out.changes.append(
+                f"{room.id}: moved window {window.id} from {_xy(window.position)} to "
+                f"{_xy(moved.position)} so that the {names} fits"
+            )
+            continue
+        # In place, above the defining furniture: the layout must then keep taller things away.
+        tallest = max((heights[i] for i in defining), default=0.0)
+        raised = raise_sill(window, tallest, context.wall_height)
+        trial = solve([*kept, raised]) if raised is not None else None
+        if raised is not None and trial is not None and not defining - set(trial.placements):
+            kept.append(raised)
+            result = trial
+            out.changes.append(
+                f"{room.id}: raised the sill of window {window.id} from "
+                f"{window.base_height:.2f} to {raised.base_height:.2f} m so that the {names} "
+                "fits below it (no other stretch of exterior wall was free)"
+            )
+        else:
+            out.changes.append(
+                f"{room.id}: left out window {window.id}: the {names} needs its wall, no other "
+                "stretch of exterior wall is free and it does not fit below a raised window"
+            )
+    order = {w.id: i for i, w in enumerate(windows)}
+    return sorted(kept, key=lambda w: order[w.id]), result
+
+
+def _xy(point: Sequence[float]) -> str:
+    return f"({point[0]:.2f}, {point[1]:.2f})"
 
 
 def _retrieve(
@@ -238,13 +390,46 @@ def _retrieve(
     return chosen
 
 
+def _hung_above(
+    plan_room: PlanRoom, wall_assets: dict[str, str], library: AssetLibrary
+) -> dict[str, float]:
+    """Plan name of a floor object -> (width, height) of the wall objects hung above it (the
+    widest and the tallest)."""
+    out: dict[str, tuple[float, float]] = {}
+    for obj in plan_room.objects:
+        if obj.placement != "wall" or obj.above is None:
+            continue
+        for instance in obj.instances():
+            if instance in wall_assets:
+                _, width, height = library.get(wall_assets[instance]).meta.size
+                old_w, old_h = out.get(obj.above, (0.0, 0.0))
+                out[obj.above] = (max(old_w, width), max(old_h, height))
+    return out
+
+
+def _priorities(plan_room: PlanRoom) -> dict[str, int]:
+    """Layout priority per instance: defining furniture 100, requested objects 10, others 1."""
+    out = {}
+    for obj in plan_room.objects:
+        priority = DEFINING_PRIORITY if obj.defining else REQUESTED_PRIORITY if obj.requested else 1
+        for instance in obj.instances():
+            out[instance] = priority
+    return out
+
+
 def _problem(
     plan_room: PlanRoom,
     room: Room,
     context: RoomContext,
-    assets: dict[str, str],
+    room_windows: Sequence[Window],
+    room_assets: RoomAssets,
     library: AssetLibrary,
 ) -> RoomProblem:
+    """The layout problem of the room's floor objects. A floor object that a wall object hangs
+    above (a TV stand under its TV) counts as tall as both together and as wide as the wider,
+    so that the wall above it stays free of windows."""
+    assets = room_assets.floor
+    hung = _hung_above(plan_room, room_assets.wall, library)
     inset = context.wall_thickness / 2 + LAYOUT_MARGIN_M
     polygon = Polygon(room.polygon).buffer(-inset, join_style="mitre")
     ring = polygon.exterior
@@ -277,13 +462,26 @@ def _problem(
             sill_height=w.base_height,
             height=w.height,
         )
-        for w in context.windows
-        if room.id in w.rooms
+        for w in room_windows
     ]
+    priorities = _priorities(plan_room)
     objects = []
     for instance, asset_id in assets.items():
         depth, width, height = library.get(asset_id).meta.size
-        objects.append(LayoutObject(id=instance, width=width, depth=depth, height=height))
+        above = hung.get(instance.rsplit("-", 1)[0])
+        if above is not None:
+            # the wall object's span keeps its frame margin from window frames too
+            width = max(width, above[0] + 2 * OPENING_MARGIN_M)
+            height = height + ABOVE_GAP_M + above[1]
+        objects.append(
+            LayoutObject(
+                id=instance,
+                width=width,
+                depth=depth,
+                height=height,
+                priority=priorities.get(instance, 1),
+            )
+        )
     coords = [(round(x, 6), round(y, 6)) for x, y in list(ring.coords)[:-1]]
     return RoomProblem(
         room_id=room.id,
@@ -306,6 +504,7 @@ def _hang(
     plan_room: PlanRoom,
     room: Room,
     context: RoomContext,
+    room_windows: Sequence[Window],
     assets: dict[str, str],
     floor_items: list[FloorItem],
     library: AssetLibrary,
@@ -333,7 +532,7 @@ def _hang(
         room,
         context.walls,
         context.doors,
-        context.windows,
+        [*(w for w in context.windows if room.id not in w.rooms), *room_windows],
         floor_items,
         requests,
         stage_rng(seed, "wall_objects", room.id),
@@ -341,6 +540,8 @@ def _hang(
         wall_thickness=context.wall_thickness,
     )
     for p in placed:
+        if p.note:
+            out.changes.append(f"{room.id}: {p.id}: {p.note}")
         obj = p.scene_object(asset_of[p.id]).model_copy(
             update={
                 "position": tuple(round(v, 4) for v in (p.x, p.y, p.z)),

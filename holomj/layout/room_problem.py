@@ -75,6 +75,11 @@ class LayoutObject(FrozenModel):
     unit: Literal["cm", "m"] | None = Field(
         default=None, description="Unit of this object's sizes; default: the problem's size_unit."
     )
+    priority: Annotated[int, Field(ge=1, le=1000)] = Field(
+        default=1,
+        description="How much placing it matters: the solvers place objects of a higher "
+        "priority first and drop lower ones before it (a room's defining furniture: 100).",
+    )
 
 
 class LayoutSettings(FrozenModel):
@@ -306,6 +311,8 @@ class Item:
     depth: float
     height: float | None
     tall: bool
+    priority: int = 1
+    windows: tuple[int, ...] = ()  # the windows it must keep clear of (taller than their sill)
 
     @property
     def size(self) -> tuple[float, float]:
@@ -338,8 +345,14 @@ class PreparedRoom:
         self.items: list[Item] = []
         for index, obj in enumerate(problem.objects):
             width, depth, height = problem.object_size_m(obj)
-            tall = height is None or any(height > w.sill_height for w in problem.windows)
-            self.items.append(Item(index, obj.id, width, depth, height, tall))
+            blocked = tuple(
+                k
+                for k, w in enumerate(problem.windows)
+                if height is None or height > w.sill_height
+            )
+            self.items.append(
+                Item(index, obj.id, width, depth, height, bool(blocked), obj.priority, blocked)
+            )
         self.index = {item.id: item.index for item in self.items}
         self.thresholds = geo.Thresholds(
             near=s.near_m,
@@ -371,15 +384,24 @@ class PreparedRoom:
         self.door_block = np.zeros_like(self.wall_block)
         for zone in self.door_zones:
             self.door_block |= self.raster.touched(zone)
+        self.window_blocks = [self.raster.touched(zone) for zone in self.window_zones]
         self.window_block = np.zeros_like(self.wall_block)
-        for zone in self.window_zones:
-            self.window_block |= self.raster.touched(zone)
+        for block in self.window_blocks:
+            self.window_block |= block
         self.walk = geo.WalkChecker(self.room, self.door_zones, s.walk_grid_m, s.walker_radius_m)
         if self.walk.reason == "doors are not connected even in the empty room":
             self.warnings.append(
                 "the doors are not connected even in the empty room: the walkable-path rule "
                 "is not applied"
             )
+
+    def windows_block(self, i: int) -> np.ndarray:
+        """The cells object ``i`` may not cover because of windows whose sill it is taller
+        than."""
+        block = np.zeros_like(self.wall_block)
+        for k in self.items[i].windows:
+            block |= self.window_blocks[k]
+        return block
 
     def units_up(self, metres: float) -> int:
         """``metres`` in whole grid units, rounded up."""
@@ -452,5 +474,6 @@ class PreparedRoom:
             buffered = max(gap - 2 * th.footprint_buffer, 0.0)
             limit = th.near if constraint.kind == "near" else th.far
             sign = "<=" if constraint.kind == "near" else ">="
-            return ok, f"gap {buffered:.2f} m between buffered footprints (needs {sign} {limit:g} m)"
+            why = f"gap {buffered:.2f} m between buffered footprints (needs {sign} {limit:g} m)"
+            return ok, why
         return ok, "holds" if ok else "does not hold"

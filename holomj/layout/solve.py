@@ -259,7 +259,8 @@ def hard_checks(prep: PreparedRoom, poses: dict[int, Pose]) -> tuple[HardChecks,
                 checks.door_zones.append(f"{a} in front of {door.id}")
                 blame.setdefault(i, f"in the keep-out zone of {door.id}")
         if prep.items[i].tall:
-            for window, zone in zip(prep.problem.windows, prep.window_zones):
+            for w in prep.items[i].windows:
+                window, zone = prep.problem.windows[w], prep.window_zones[w]
                 if shape.intersection(zone).area > 1e-9:
                     checks.windows.append(f"{a} blocks {window.id}")
                     blame.setdefault(i, f"taller than the sill of {window.id} and in front of it")

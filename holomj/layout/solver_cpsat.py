@@ -11,7 +11,7 @@ Hard constraints:
   inside the room polygon (exact for rooms whose corners lie on the grid, conservative
   otherwise), a frame around the box, the door keep-out/swing zones, and extra corridor cells
   when the walkable path had to be reserved;
-* a second ``NoOverlap2D`` for tall objects against the window zones;
+* one more ``NoOverlap2D`` per window: the objects taller than its sill against its zone;
 * per object, a ``NoOverlap2D`` of a 2-cell-wide strip in front of the front face (present for
   the chosen yaw) against the walls: no object faces a wall closer than ``front_clearance_m``.
 
@@ -19,8 +19,9 @@ Soft constraints: one literal ``s_c`` per constraint, which implies both objects
 enforces (through ``OnlyEnforceIf`` on ``s_c`` and the yaw literals) a conservative integer form
 of the geometric test of :mod:`holomj.layout.geometry`: sizes are rounded the safe way so that
 whatever the model calls satisfied passes the post-check. Objective: maximise
-``W * sum p_i + sum w_c * s_c`` with ``W`` above the total constraint weight, so placing one more
-object always wins over any number of relations; objects that cannot fit stay absent
+``W * sum q_i p_i + sum w_c * s_c`` (``q_i`` the object's priority) with ``W`` above the total
+constraint weight, so placing one more object always wins over any number of relations, and an
+object of priority ``q`` over ``q`` objects of priority 1; objects that cannot fit stay absent
 (``p_i = 0``) and are reported, never dropped silently.
 
 Determinism: with ``deterministic=True`` (the default) CP-SAT runs one worker stopped by a
@@ -122,9 +123,9 @@ class _Model:
         doors = self._cells_to_units(geo.merge_cells(prep.door_block & ~prep.wall_block))
         main_x, main_y = self._fixed(walls + doors + self.extra, "ob")
         self.wall_rects = walls
-        tall_x: list = []
-        tall_y: list = []
-        window_rects = self._cells_to_units(geo.merge_cells(prep.window_block & ~prep.wall_block))
+        # per window: the boxes of the objects taller than its sill, which keep clear of it
+        tall_x: list[list] = [[] for _ in prep.window_blocks]
+        tall_y: list[list] = [[] for _ in prep.window_blocks]
         self.parity: list[list] = []
         for i in range(len(prep.items)):
             lits = self._parity_lits(i)
@@ -139,13 +140,15 @@ class _Model:
                 )
                 main_x.append(ix)
                 main_y.append(iy)
-                if prep.items[i].tall and window_rects:
-                    tall_x.append(ix)
-                    tall_y.append(iy)
+                for w in prep.items[i].windows:
+                    tall_x[w].append(ix)
+                    tall_y[w].append(iy)
         self.m.add_no_overlap_2d(main_x, main_y)
-        if tall_x:
-            wx, wy = self._fixed(window_rects, "win")
-            self.m.add_no_overlap_2d(tall_x + wx, tall_y + wy)
+        for w, block in enumerate(prep.window_blocks):
+            rects = self._cells_to_units(geo.merge_cells(block & ~prep.wall_block))
+            if tall_x[w] and rects:
+                wx, wy = self._fixed(rects, f"win{w}_")
+                self.m.add_no_overlap_2d(tall_x[w] + wx, tall_y[w] + wy)
         length = prep.units_up(prep.settings.front_clearance_m)
         if length > 0:
             for i in range(len(prep.items)):
@@ -366,7 +369,8 @@ class _Model:
                 raise ValueError(f"unknown relation {kind}")
 
     def objective(self) -> None:
-        """Placed objects first, then constraint weights, then (tie-break) small near gaps.
+        """Placed objects (by priority) first, then constraint weights, then (tie-break) small
+        near gaps.
 
         The scale makes one unit of constraint weight worth more than all tie-breaks together.
         """
@@ -381,8 +385,9 @@ class _Model:
         self.scale = scale
         weights = [round(c.weight * scale) for c in prep.constraints]
         big = sum(weights) + scale
+        # An object of priority q outweighs q objects of priority 1 and every constraint.
         self.m.maximize(
-            sum(big * p for p in self.p)
+            sum(big * item.priority * p for item, p in zip(prep.items, self.p))
             + sum(w * s for w, s in zip(weights, self.s))
             - sum(pen for pen, _ in penalties)
         )

@@ -36,7 +36,8 @@ class GreedyOutcome:
 
 
 def dependency_order(prep: PreparedRoom) -> list[int]:
-    """Targets before the objects that refer to them; among the ready ones, largest first."""
+    """Targets before the objects that refer to them; among the ready ones, the highest
+    priority first, then the largest."""
     deps: dict[int, set[int]] = {item.index: set() for item in prep.items}
     for c in prep.constraints:
         if c.target is not None:
@@ -46,7 +47,7 @@ def dependency_order(prep: PreparedRoom) -> list[int]:
     while left:
         ready = [i for i in left if not (deps[i] & left)]
         pool = ready or list(left)  # a cycle: break it at the largest object
-        pick = max(pool, key=lambda i: (prep.items[i].area, -i))
+        pick = max(pool, key=lambda i: (prep.items[i].priority, prep.items[i].area, -i))
         order.append(pick)
         left.remove(pick)
     return order
@@ -126,7 +127,7 @@ class CandidateFinder:
         prep = self.prep
         blocked = prep.wall_block | prep.door_block
         if prep.items[i].tall:
-            blocked = blocked | prep.window_block
+            blocked = blocked | prep.windows_block(i)
         if occ is not None:
             blocked = blocked | occ
         return geo.SummedArea(blocked)

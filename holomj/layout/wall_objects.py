@@ -9,7 +9,8 @@ for every SceneObject.
 Heights (``WALL_HEIGHTS``): the default z of a kind, given as the height of its centre or of its
 bottom. ``height_m`` in a request overrides it (always the bottom). An object ``above`` a floor
 object is centred over it, on the wall nearest to it, at least ``ABOVE_GAP_M`` above its top (a
-TV sits exactly that far above its stand).
+TV sits exactly that far above its stand); a TV whose stand's wall is taken (by a window, say)
+goes to the widest free stretch of wall instead, and the placement says so.
 
 ============  ===================
 kind          default height
@@ -99,6 +100,7 @@ class WallPlacement:
     yaw_deg: float
     wall_id: str
     room: str
+    note: str | None = None  # how it was placed when not as asked (a TV off its stand's wall)
 
     def scene_object(
         self, asset: str, scale: float | tuple[float, float, float] = 1.0
@@ -300,6 +302,7 @@ def place_wall_objects(
                 )
             )
             continue
+        note = None
         if req.above is not None:
             outcome = _place_above(
                 req,
@@ -313,6 +316,17 @@ def place_wall_objects(
                 base,
                 wall_height,
             )
+            if isinstance(outcome, str) and normal_type(req.kind) == "television":
+                # A TV is always placed: when the wall over its stand is taken, on the widest
+                # free stretch of wall at a TV's height.
+                free_base = req.height_m if req.height_m is not None else base
+                fallback = _place_free(
+                    req, faces, doors, windows, walls, floor, placed, free_base, wall_height, rng
+                )
+                if not isinstance(fallback, str):
+                    note = f"{outcome}: hung on another wall"
+                    outcome, base = fallback, free_base
+                    z1 = base + height
         else:
             outcome = _place_free(
                 req, faces, doors, windows, walls, floor, placed, base, wall_height, rng
@@ -334,6 +348,7 @@ def place_wall_objects(
                 yaw_deg=round(yaw, 4) + 0.0,
                 wall_id=face.wall.id,
                 room=room.id,
+                note=note,
             )
         )
     return result, unplaced

@@ -121,7 +121,8 @@ def _check_input(prompt: object, seed: object) -> str:
 
 
 def _plan_room(state: DraftPlan, room: DraftRoom, styles: list[str]) -> PlanRoom:
-    objects = [_plan_object(state, obj, styles) for obj in room.objects]
+    defining = set(room.template.defining)
+    objects = [_plan_object(state, obj, styles, obj.name in defining) for obj in room.objects]
     return PlanRoom(
         id=room.id,
         type=room.template.type,
@@ -137,7 +138,9 @@ def _plan_room(state: DraftPlan, room: DraftRoom, styles: list[str]) -> PlanRoom
     )
 
 
-def _plan_object(state: DraftPlan, obj: DraftObject, styles: list[str]) -> PlanObject:
+def _plan_object(
+    state: DraftPlan, obj: DraftObject, styles: list[str], defining: bool
+) -> PlanObject:
     description = obj.kind.description
     if obj.adjectives:
         description = f"{' '.join(obj.adjectives)} {obj.name}"
@@ -163,6 +166,7 @@ def _plan_object(state: DraftPlan, obj: DraftObject, styles: list[str]) -> PlanO
             for s in obj.on_top
         ],
         requested=obj.requested,
+        defining=defining,
     )
 
 

@@ -60,18 +60,23 @@ class PlanObject(FrozenModel):
     )
     quantity: Annotated[int, Field(ge=1, le=40)] = 1
     variance: Variance = "same"
-    placement: Literal["floor", "wall"] = "floor"
+    placement: Literal["floor", "wall", "ceiling"] = "floor"
     above: ObjectName | None = Field(
         default=None,
         description="Wall objects only: hang above this floor object (its first instance).",
     )
     on_top: list[PlanSmallObject] = Field(default_factory=list, max_length=20)
     requested: bool = Field(default=False, description="Explicitly asked for in the request.")
+    defining: bool = Field(
+        default=False,
+        description="Defining furniture of its room (a bed in a bedroom): laid out first, and "
+        "the plan changes (a window moves) before it is dropped.",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> PlanObject:
-        if self.above is not None and self.placement != "wall":
-            raise ValueError("'above' is for wall objects")
+        if self.above is not None and self.placement == "floor":
+            raise ValueError("'above' is for wall and ceiling objects")
         return self
 
     def instances(self) -> list[str]:

@@ -26,6 +26,8 @@ PROMPTS = [
     "a small cafe",
     "a hotel room with a desk",
     "a yoga studio",
+    "a small bedroom",
+    "a living room with a sofa, a coffee table, a TV stand and two armchairs",
 ]
 
 
@@ -62,7 +64,7 @@ def test_generate_gives_a_valid_stable_scene_with_the_requested_objects(
     plan = result.plan
     for room in plan.rooms:
         for obj in room.objects:
-            if obj.requested:
+            if obj.requested or obj.defining:  # asked for, or what makes the room what it is
                 for instance in obj.instances():
                     assert object_id(room.id, instance) in scene_ids, (prompt, instance)
     assert result.record["counts"]["furniture"] >= 2

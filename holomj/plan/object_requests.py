@@ -128,6 +128,8 @@ def _add_object(
     obj = room.get(name)
     size = kind.size_for(request.size)
     if obj is None:
+        _replace_same_category(state, room, name, kind)
+    if obj is None:
         variance = kind.variance if quantity > 1 else "same"
         obj = DraftObject(name=name, kind=kind, quantity=quantity, variance=variance)
         obj.size = size
@@ -144,6 +146,19 @@ def _add_object(
     obj.per = None
     obj.adjectives = list(request.adjectives)
     obj.asked = request.phrase
+
+
+def _replace_same_category(
+    state: DraftPlan, room: DraftRoom, name: str, kind: ObjectKind
+) -> None:
+    """A requested kind takes the place of the template's object of the same category (a
+    twin bed asked for is the room's bed, not a second one)."""
+    for other in list(room.objects):
+        if other.requested or other.name == name:
+            continue
+        if other.kind.category == kind.category and other.kind.placement == kind.placement:
+            remove_object(room, other)
+            state.note(f"the {name} asked for takes the place of the {other.name} in {room.id}")
 
 
 def _add_small(

@@ -121,8 +121,15 @@ def _check_input(prompt: object, seed: object) -> str:
 
 
 def _plan_room(state: DraftPlan, room: DraftRoom, styles: list[str]) -> PlanRoom:
+    # defining: the template's defining kinds, or what took their place (same category)
     defining = set(room.template.defining)
-    objects = [_plan_object(state, obj, styles, obj.name in defining) for obj in room.objects]
+    categories = {state.kb.objects[n].category for n in defining if n in state.kb.objects}
+    objects = [
+        _plan_object(
+            state, obj, styles, obj.name in defining or obj.kind.category in categories
+        )
+        for obj in room.objects
+    ]
     return PlanRoom(
         id=room.id,
         type=room.template.type,

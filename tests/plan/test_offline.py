@@ -409,3 +409,16 @@ def test_same_plan_in_another_process() -> None:
         for hash_seed in (1, 2)
     }
     assert len(digests) == 1
+
+
+def test_a_requested_kind_takes_the_template_objects_place(kb: KnowledgeBase) -> None:
+    """'a twin bed' is the bedroom's bed, not a second one, and it stays defining."""
+    room = plan("a bedroom with a twin bed").rooms[0]
+    beds = [o for o in room.objects if o.category == "bed"]
+    assert [(o.name, o.quantity, o.requested, o.defining) for o in beds] == [
+        ("single bed", 1, True, True)
+    ]
+    plain = plan("a bedroom").rooms[0]
+    assert [o.defining for o in plain.objects if o.category == "bed"] == [True]
+    defining = kb.rooms["bedroom"].defining
+    assert all(not o.defining for o in plain.objects if o.name not in defining)

@@ -156,8 +156,11 @@ def solve_room(
             missing = [i for i in range(len(prep.items)) if i not in found]
             found, extra_reasons = insert_unplaced(prep, found, missing, rng)
             g = prep.grid
-            cp_key = (len(found), satisfied_weight(prep, _metres(found, g)))
-            gr_key = (len(greedy.poses), satisfied_weight(prep, _metres(greedy.poses, g)))
+            cp_key = (_placed_priority(prep, found), satisfied_weight(prep, _metres(found, g)))
+            gr_key = (
+                _placed_priority(prep, greedy.poses),
+                satisfied_weight(prep, _metres(greedy.poses, g)),
+            )
             if cp_key >= gr_key:
                 poses, reasons, used = found, extra_reasons, "cpsat"
             else:
@@ -167,7 +170,44 @@ def solve_room(
                     f"({gr_key[0]} placed, weight {gr_key[1]:g} vs {cp_key[0]}, {cp_key[1]:g})"
                 )
     poses, reasons = _enforce_hard(prep, poses, reasons, warnings)
+    poses = snap_to_walls(prep, poses)
     return _report(prep, poses, reasons, start, used, status, warnings)
+
+
+def _placed_priority(prep: PreparedRoom, poses: dict[int, Pose]) -> int:
+    """How much of what matters is placed: the sum of the placed objects' priorities."""
+    return sum(prep.items[i].priority for i in poses)
+
+
+def snap_to_walls(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
+    """Objects asked to stand at an ``edge`` pushed back, a grid step at a time, until their
+    back meets the wall (as Holodeck moves edge objects onto the wall); a step is kept only
+    while every hard rule still holds and no satisfied constraint is lost."""
+    edge = sorted({prep.index[c.object] for c in prep.constraints if c.kind == "edge"})
+    if not edge:
+        return poses
+    poses = dict(poses)
+    g = prep.grid
+    checks, _ = hard_checks(prep, poses)
+    if not checks.ok:
+        return poses
+    weight = satisfied_weight(prep, _metres(poses, g))
+    steps = max(1, prep.units_up(prep.settings.edge_tolerance_m + g))
+    for i in edge:
+        if i not in poses:
+            continue
+        for _ in range(steps):
+            x, y, k = poses[i]
+            fx, fy = geo.FRONT[k]
+            trial = {**poses, i: (x - fx, y - fy, k)}
+            checks, _ = hard_checks(prep, trial)
+            if not checks.ok:
+                break
+            new_weight = satisfied_weight(prep, _metres(trial, g))
+            if new_weight < weight - 1e-9:
+                break
+            poses, weight = trial, new_weight
+    return poses
 
 
 def _metres(poses: dict[int, Pose], g: float) -> dict[int, tuple[float, float, int]]:

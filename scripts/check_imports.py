@@ -128,11 +128,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.library",
             "holomj.jobs",
             "holomj.batch",
-            "holomj.importers",
-            "holomj.rendering",
-            "holomj.robots",
-            "holomj.mjcf",
-            "holomj.layout",
+            "holomj.importers",  # the list of input formats, for --format
         ),
     ),
     "holomj.__main__": ("python -m holomj", ("holomj.cli",)),

@@ -51,7 +51,6 @@ import math
 import re
 from collections import Counter
 from dataclasses import dataclass
-from itertools import chain
 from pathlib import PurePath
 from typing import Any
 
@@ -71,7 +70,7 @@ from holomj.importers.frames import (
     unity_point,
     yaw_from_unity,
 )
-from holomj.importers.ids import listed_ids, sanitise
+from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
 from holomj.importers.result import ImportResult
 from holomj.importers.state import ImportState
@@ -164,17 +163,7 @@ class _ProcthorImport(ImportState):
     def _check_ids(self) -> None:
         """Reject ids used twice among the rooms, the openings (doors and windows share holomj's
         namespace) or the objects (nested ``children`` included), naming both places."""
-        data = self.root.value
-        self.check_ids(
-            [
-                listed_ids(data.get("rooms"), "rooms"),
-                chain(
-                    listed_ids(data.get("doors"), "doors"),
-                    listed_ids(data.get("windows"), "windows"),
-                ),
-                listed_ids(data.get("objects"), "objects", children="children"),
-            ]
-        )
+        self.check_scene_ids(self.root.value, children="children")
 
     def _looks_like_holodeck(self, room_nodes: list[Node]) -> bool:
         if self.root.has("wall_height") or self.root.has("open_walls"):

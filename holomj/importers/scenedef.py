@@ -49,14 +49,13 @@ A light: ``{"id", "type": "point" | "spot" | "directional", "position": [x, y, z
 from __future__ import annotations
 
 from collections import Counter
-from itertools import chain
 from pathlib import PurePath
 from typing import Any
 
 from holomj.errors import SpecError
 from holomj.importers.common import build_model, light_kind, snap_opening
 from holomj.importers.frames import normalise_deg, quat_from_euler_xyz
-from holomj.importers.ids import listed_ids, sanitise
+from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
 from holomj.importers.result import ImportResult
 from holomj.importers.state import ImportState
@@ -110,17 +109,7 @@ class _SceneDefImport(ImportState):
         """Reject ids used twice among the rooms, the openings (doors and windows share holomj's
         namespace) or the objects, naming both places. Ids made from a placement number
         (``<id>_<k>``) or a category are the importer's, not the input's, and are not checked."""
-        data = self.root.value
-        self.check_ids(
-            [
-                listed_ids(data.get("rooms"), "rooms"),
-                chain(
-                    listed_ids(data.get("doors"), "doors"),
-                    listed_ids(data.get("windows"), "windows"),
-                ),
-                listed_ids(data.get("objects"), "objects"),
-            ]
-        )
+        self.check_scene_ids(self.root.value)
 
     # -- helpers ---------------------------------------------------------------------------
     def _list(self, key: str) -> list[Node]:

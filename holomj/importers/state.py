@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
+from itertools import chain
 from typing import Any
 
 from holomj.errors import SpecError
 from holomj.importers.common import finish_scene
-from holomj.importers.ids import IdMap, check_unique_ids
+from holomj.importers.ids import IdMap, check_unique_ids, listed_ids
 from holomj.importers.jsonpath import Node
 from holomj.importers.materials import MaterialResolver
 from holomj.importers.result import ImportResult, Substitution
@@ -44,6 +45,21 @@ class ImportState:
         in document order), naming both places; see :func:`check_unique_ids`."""
         for entries in namespaces:
             check_unique_ids(entries, self.source)
+
+    def check_scene_ids(self, data: dict[str, Any], children: str | None = None) -> None:
+        """Reject ids used twice among the rooms, the openings (doors and windows share
+        holomj's namespace) or the objects (with ``children``: nested ones included) of the
+        input's top-level ``data``, naming both places."""
+        self.check_ids(
+            [
+                listed_ids(data.get("rooms"), "rooms"),
+                chain(
+                    listed_ids(data.get("doors"), "doors"),
+                    listed_ids(data.get("windows"), "windows"),
+                ),
+                listed_ids(data.get("objects"), "objects", children=children),
+            ]
+        )
 
     def result(self, fields: dict[str, Any], fmt: str) -> ImportResult:
         """Validate the scene built from ``fields`` and wrap it with this import's report."""

@@ -11,7 +11,6 @@ import re
 import shutil
 import subprocess
 import sys
-from html.parser import HTMLParser
 from pathlib import Path
 
 import mujoco
@@ -28,6 +27,7 @@ from holomj.rendering import gl
 from holomj.rendering.cameras import TopCamera
 from holomj.spec.report import StabilityReport
 from tests.rendering.conftest import empty_library_at, two_room_compiled_in, two_room_folder_in
+from tests.rendering.html_page import Page, parse_page
 
 
 @pytest.fixture(scope="module")
@@ -292,39 +292,8 @@ def test_broken_egl_falls_back_to_osmesa_in_a_child_process(two_room_folder: Pat
     assert manifest["backend"] == "osmesa"
 
 
-class _Page(HTMLParser):
-    """Collects image sources and table rows (as cell texts)."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.images: list[str] = []
-        self.rows: list[list[str]] = []
-        self.text: list[str] = []
-        self._cell: list[str] | None = None
-
-    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
-        if tag == "img":
-            self.images.append(dict(attrs).get("src") or "")
-        if tag == "tr":
-            self.rows.append([])
-        if tag == "td":
-            self._cell = []
-
-    def handle_endtag(self, tag: str) -> None:
-        if tag == "td" and self._cell is not None:
-            self.rows[-1].append("".join(self._cell).strip())
-            self._cell = None
-
-    def handle_data(self, data: str) -> None:
-        self.text.append(data)
-        if self._cell is not None:
-            self._cell.append(data)
-
-
-def _parse(path: Path) -> _Page:
-    page = _Page()
-    page.feed(path.read_text(encoding="utf-8"))
-    return page
+def _parse(path: Path) -> Page:
+    return parse_page(path.read_text(encoding="utf-8"))
 
 
 def test_page_of_a_folder_without_reports_or_renders(two_room_folder: Path) -> None:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import base64
-from html.parser import HTMLParser
 from typing import Any
 
 from holomj.library import AssetLibrary
@@ -12,45 +11,7 @@ from holomj.rendering import Rendering, RenderOptions, render_page, render_scene
 from holomj.rendering.report_html import manifest_images
 from holomj.spec.plan import ScenePlan
 from holomj.spec.report import ObjectReport, StabilityReport
-
-
-class _Page(HTMLParser):
-    """Collects image sources, table rows (as cell texts) and the visible text."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.images: list[str] = []
-        self.rows: list[list[str]] = []
-        self.text: list[str] = []
-        self._cell: list[str] | None = None
-        self.external: list[str] = []
-
-    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
-        values = dict(attrs)
-        if tag == "img":
-            self.images.append(values.get("src") or "")
-        if tag in ("link", "script"):
-            self.external.append(tag)
-        if tag == "tr":
-            self.rows.append([])
-        if tag == "td":
-            self._cell = []
-
-    def handle_endtag(self, tag: str) -> None:
-        if tag == "td" and self._cell is not None:
-            self.rows[-1].append("".join(self._cell).strip())
-            self._cell = None
-
-    def handle_data(self, data: str) -> None:
-        self.text.append(data)
-        if self._cell is not None:
-            self._cell.append(data)
-
-
-def _parse(html: str) -> _Page:
-    page = _Page()
-    page.feed(html)
-    return page
+from tests.rendering.html_page import Page, parse_page
 
 
 def _manifest(rendering: Rendering) -> dict[str, Any]:
@@ -65,7 +26,7 @@ def _manifest(rendering: Rendering) -> dict[str, Any]:
     }
 
 
-def _object_rows(page: _Page) -> dict[str, list[str]]:
+def _object_rows(page: Page) -> dict[str, list[str]]:
     return {row[0]: row for row in page.rows if row}
 
 
@@ -108,7 +69,7 @@ def test_page_without_validation_says_not_validated(
     two_room_compiled: CompiledScene, two_room_library: AssetLibrary
 ) -> None:
     html = render_page(two_room_compiled.scene, two_room_library)
-    page = _parse(html)
+    page = parse_page(html)
     text = " ".join(page.text)
     assert "Not validated" in text and "holomj render OUT" in text  # no renders yet
     rows = _object_rows(page)
@@ -143,7 +104,7 @@ def test_page_shows_the_report_plan_notes_and_embedded_views(
         manifest=manifest,
         images=rendering.images,
     )
-    page = _parse(html)
+    page = parse_page(html)
     text = " ".join(page.text)
     assert "Not valid: 2/3 objects stable" in text
     assert "MuJoCo warning mjWARN_BADQACC: 1" in text
@@ -180,5 +141,5 @@ def test_images_given_as_urls_are_linked_and_missing_ones_left_out(
     }
     images = {"renders/plan.png": "renders/plan.png", "renders/rooms/kitchen.png": "a&b.png"}
     html = render_page(two_room_compiled.scene, two_room_library, manifest=manifest, images=images)
-    assert _parse(html).images == ["renders/plan.png", "a&b.png"]
+    assert parse_page(html).images == ["renders/plan.png", "a&b.png"]
     assert 'src="a&amp;b.png"' in html  # escaped in the markup

@@ -15,6 +15,9 @@ from holomj.plan.knowledge import RoomTemplate, SceneType
 WALL_HEIGHT_LIMITS = (2.4, 4.0)
 
 
+LISTED_ROOMS = 3  # a prompt naming this many kinds of room lists the rooms it wants
+
+
 def make_rooms(state: DraftPlan, scene: SceneType) -> None:
     """Room instances of the scene with counts from the prompt, plus rooms it adds."""
     kb, rng, parsed = state.kb, state.rng, state.parsed
@@ -24,12 +27,22 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
         keep = rng.random() < entry.probability
         counts[entry.id] = drawn if keep else 0
     single = len(scene.rooms) == 1
+    # A prompt that lists its rooms ("a house with a kitchen, a dining room, a living room and
+    # a bedroom") gets those rooms: each listed room once unless counted, the others of the
+    # scene type only at their minimum ("a bedroom" is one bedroom, not three).
+    listed = len({m.template for m in parsed.rooms if not m.excluded}) >= LISTED_ROOMS
+    if listed:
+        named = {m.template for m in parsed.rooms}
+        for entry in scene.rooms:
+            template = kb.rooms[entry.template]
+            if entry.template not in named and template.counts_as not in named:
+                counts[entry.id] = entry.count[0] if entry.probability >= 1.0 else 0
     extra: dict[str, int] = {}  # template -> count, for rooms the scene type does not have
     for mention in parsed.rooms:
         template = mention.template
         direct = [e for e in scene.rooms if e.template == template]
         counted = [e for e in scene.rooms if kb.rooms[e.template].counts_as == template]
-        wanted = mention.count
+        wanted = mention.count if mention.count is not None or not listed else 1
         if single and direct and wanted is None:
             continue  # "a bedroom with ... a bedroom": the scene's own room
         if wanted == 0:

@@ -422,3 +422,17 @@ def test_a_requested_kind_takes_the_template_objects_place(kb: KnowledgeBase) ->
     assert [o.defining for o in plain.objects if o.category == "bed"] == [True]
     defining = kb.rooms["bedroom"].defining
     assert all(not o.defining for o in plain.objects if o.name not in defining)
+
+
+def test_a_prompt_that_lists_its_rooms_gets_those_rooms() -> None:
+    """Three or more kinds of room named: each once unless counted, the scene type's other
+    rooms only at their minimum (no second bathroom or third bedroom nobody asked for)."""
+    result = plan("a house with a kitchen, a living room, a bedroom and a bathroom")
+    types = [r.type for r in result.rooms]
+    assert types.count("bathroom") == 1
+    assert sum(t in ("bedroom", "master_bedroom") for t in types) == 1
+    assert {"kitchen", "living_room"} <= set(types)
+    counted = plan("a house with a kitchen, a living room, three bedrooms and two bathrooms")
+    ctypes = [r.type for r in counted.rooms]
+    assert sum(t in ("bedroom", "master_bedroom") for t in ctypes) == 3
+    assert ctypes.count("bathroom") == 2

@@ -100,6 +100,7 @@ class DraftPlan:
     encoder: TextEncoder | None
     notes: list[str] = field(default_factory=list)
     rooms: list[DraftRoom] = field(default_factory=list)
+    only_room: str | None = None  # the one room template the prompt asked for, alone
 
     def note(self, text: str) -> None:
         """Add a note for the plan (once)."""

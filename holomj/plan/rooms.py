@@ -26,7 +26,11 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
         drawn = int(rng.integers(entry.count[0], entry.count[1] + 1))
         keep = rng.random() < entry.probability
         counts[entry.id] = drawn if keep else 0
-    single = len(scene.rooms) == 1
+    if state.only_room is not None:  # one room asked for, alone
+        counts = {e.id: int(e.template == state.only_room) for e in scene.rooms}
+        first = [e.id for e in scene.rooms if counts[e.id]]
+        counts = {k: int(k == first[0]) for k in counts} if first else counts
+    single = len(scene.rooms) == 1 or state.only_room is not None
     # A prompt that lists its rooms ("a house with a kitchen, a dining room, a living room and
     # a bedroom") gets those rooms: each listed room once unless counted, the others of the
     # scene type only at their minimum ("a bedroom" is one bedroom, not three).

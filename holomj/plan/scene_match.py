@@ -26,6 +26,10 @@ def choose_scene(state: DraftPlan) -> tuple[str, str]:
     parsed, kb = state.parsed, state.kb
     if parsed.scene is not None:
         scene, match = parsed.scene, f"keyword '{parsed.scene_keyword}'"
+    elif (single := _single_room_scene(state)) is not None:
+        scene, state.only_room = single
+        name = kb.rooms[state.only_room].name
+        match = f"one room named without a scene type: planned that room alone ({name})"
     elif any(not r.excluded for r in parsed.rooms):
         scene = HOME_SCENE
         names = ", ".join(dict.fromkeys(kb.rooms[r.template].name for r in parsed.rooms))
@@ -39,6 +43,24 @@ def choose_scene(state: DraftPlan) -> tuple[str, str]:
             match += f", refined to '{kb.scene_types[refined].name}' by '{word}'"
             break
     return scene, match
+
+
+def _single_room_scene(state: DraftPlan) -> tuple[str, str] | None:
+    """(scene type, room template) when the prompt names one kind of room, once, and no scene
+    ("a veterinary exam room with ..."): the scene type with the fewest rooms that has that
+    room, to be planned with that room alone; else None."""
+    kb = state.kb
+    wanted = {r.template for r in state.parsed.rooms if not r.excluded}
+    counts = [r.count for r in state.parsed.rooms if not r.excluded]
+    if len(wanted) != 1 or any(c is not None and c > 1 for c in counts):
+        return None
+    (template,) = wanted
+    having = sorted(
+        (len(st.rooms), sid)
+        for sid, st in kb.scene_types.items()
+        if any(e.template == template for e in st.rooms)
+    )
+    return (having[0][1], template) if having else None
 
 
 def _nearest_scene(state: DraftPlan) -> tuple[str, str]:

@@ -436,3 +436,10 @@ def test_a_prompt_that_lists_its_rooms_gets_those_rooms() -> None:
     ctypes = [r.type for r in counted.rooms]
     assert sum(t in ("bedroom", "master_bedroom") for t in ctypes) == 3
     assert ctypes.count("bathroom") == 2
+
+
+def test_one_room_named_without_a_scene_is_that_room_alone() -> None:
+    """'a veterinary exam room with ...' is one exam room, not a home around it."""
+    result = plan("a veterinary exam room with an exam table in the middle")
+    assert [r.type for r in result.rooms] == ["vet_exam_room"]
+    assert "alone" in result.scene_type_match

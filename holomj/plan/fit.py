@@ -36,10 +36,11 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
 
     before = _counts(room)
     while sum(o.quantity for o in floor()) > limits.max_floor_instances:
-        _shrink(room, floor(), max_tier=3)
+        if not _shrink(room, floor(), max_tier=4):
+            break
     phase(before, f"at most {limits.max_floor_instances} floor objects per room")
     budget = limits.footprint_fraction * room.floor_area
-    needed = sum(o.footprint * o.quantity for o in floor() if _tier(o) > 0)
+    needed = sum(o.footprint * o.quantity for o in floor() if _tier(o, room) > 0)
     if needed > budget and not room.fixed and any(o.requested for o in floor()):
         area = min(limits.max_area, needed / limits.footprint_fraction)
         state.note(
@@ -70,7 +71,8 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
         )
     before = _counts(room)
     while sum(o.quantity for o in room.objects if not o.floor) > limits.max_wall_instances:
-        _shrink(room, [o for o in room.objects if not o.floor], max_tier=3)
+        if not _shrink(room, [o for o in room.objects if not o.floor], max_tier=4):
+            break
     phase(before, f"at most {limits.max_wall_instances} wall objects per room")
     _limit_receptacles(state, room)
     for obj in room.objects:
@@ -82,24 +84,30 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
 ESSENTIAL = 9  # template priority from which an object is essential to its room
 
 
-def _tier(obj: DraftObject) -> int:
-    """Drop order: 0 optional, 1 extra requested instances, 2 extra essential instances and
-    lesser essentials, 3 a requested object or the room's defining object (kept if it fits)."""
+def _tier(obj: DraftObject, room: DraftRoom) -> int:
+    """Drop order: 0 optional, 2 extra essential instances and lesser essentials, 3 extra
+    instances of a requested object, 4 a requested object or the room's defining object.
+
+    The footprint limit never takes from tiers 3 and 4: counts asked for are kept exactly (the
+    room grows for them when its size is open); only the hard caps on object numbers take
+    extra requested instances, and those before anything the room is defined by."""
+    if obj.name in room.template.defining:
+        return 4
     if not obj.requested and obj.priority < ESSENTIAL:
         return 0
     if obj.requested:
-        return 1 if obj.quantity > 1 else 3
-    return 2 if obj.quantity > 1 or obj.priority < 10 else 3
+        return 3 if obj.quantity > 1 else 4
+    return 2 if obj.quantity > 1 or obj.priority < 10 else 4
 
 
 def _shrink(room: DraftRoom, candidates: Sequence[DraftObject], max_tier: int) -> bool:
     """Take one instance from the lowest tier (False when no object of tier <= max_tier)."""
-    pool = [o for o in candidates if _tier(o) <= max_tier]
+    pool = [o for o in candidates if _tier(o, room) <= max_tier]
     if not pool:
         return False
-    tier = min(_tier(o) for o in pool)
-    pool = [o for o in pool if _tier(o) == tier]
-    if tier == 1:
+    tier = min(_tier(o, room) for o in pool)
+    pool = [o for o in pool if _tier(o, room) == tier]
+    if tier in (1, 3):
         victim = max(pool, key=lambda o: (o.quantity, -room.objects.index(o)))
     else:
         victim = min(pool, key=lambda o: (o.priority, -room.objects.index(o)))

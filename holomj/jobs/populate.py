@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from holomj.errors import InputError
+from holomj.errors import HolomjError, InputError
 from holomj.jobs.folder import (
     POPULATE_REPORT,
     RENDERS_DIR,
@@ -169,6 +169,6 @@ def _validate(scene: SceneSpec, library: AssetLibrary, folder: Path) -> Stabilit
 def _previous_runs(folder: Path) -> list[Any]:
     try:
         runs = (read_json_report(folder, POPULATE_REPORT) or {}).get("runs", [])
-    except (AttributeError, Exception):  # an unreadable earlier report starts a new history
+    except (HolomjError, AttributeError):  # an unreadable earlier report starts a new history
         return []
     return runs if isinstance(runs, list) else []

@@ -242,6 +242,9 @@ def _hang_from_ceiling(
     centres = {f.id: f.footprint.centroid for f in floor_items}
     polygon = Polygon(room.polygon)
     minx, miny, maxx, maxy = polygon.bounds
+    centre = (
+        polygon.centroid if polygon.centroid.within(polygon) else polygon.representative_point()
+    )
     for obj in plan_room.objects:
         if obj.placement != "ceiling":
             continue
@@ -253,15 +256,10 @@ def _hang_from_ceiling(
                 x, y = centres[target].x, centres[target].y
             else:
                 f = (k + 1) / (len(instances) + 1)
-                c = (
-                    polygon.representative_point()
-                    if not polygon.centroid.within(polygon)
-                    else polygon.centroid
-                )
                 if maxx - minx >= maxy - miny:
-                    x, y = minx + f * (maxx - minx), c.y
+                    x, y = minx + f * (maxx - minx), centre.y
                 else:
-                    x, y = c.x, miny + f * (maxy - miny)
+                    x, y = centre.x, miny + f * (maxy - miny)
             z = max(context.wall_height - meta.size[2], 0.0)
             out.objects.append(
                 SceneObject(

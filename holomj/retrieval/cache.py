@@ -10,16 +10,16 @@ kept in memory and a note says so.
 
 from __future__ import annotations
 
-import contextlib
 import hashlib
-import os
+import io
 import re
-import tempfile
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
+from holomj.atomic import write_file
 
 CACHE_SUBDIR = Path(".cache") / "retrieval"
 
@@ -129,16 +129,11 @@ class EmbeddingCache:
         keys = sorted(vectors)
         dim = next(iter(vectors.values())).shape[0] if vectors else 0
         matrix = np.stack([vectors[k] for k in keys]) if keys else np.zeros((0, dim), np.float32)
-        tmp: str | None = None
+        buffer = io.BytesIO()
+        np.savez(buffer, keys=np.array(keys, dtype="<U64"), vectors=matrix)
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(
-                prefix=f".{self.path.stem}.", suffix=".tmp", dir=self.path.parent
-            )
-            with os.fdopen(fd, "wb") as handle:
-                np.savez(handle, keys=np.array(keys, dtype="<U64"), vectors=matrix)
-            os.replace(tmp, self.path)
-            tmp = None
+            write_file(self.path, buffer.getvalue())
         except OSError as err:
             self.notes.append(
                 f"cannot write the embedding cache {self.path} "
@@ -146,9 +141,5 @@ class EmbeddingCache:
             )
             self._unwritable = True
             return False
-        finally:
-            if tmp is not None:
-                with contextlib.suppress(OSError):
-                    os.unlink(tmp)
         self._on_disk = frozenset(keys)
         return True

@@ -5,11 +5,25 @@ from __future__ import annotations
 from asset_pipeline.library_writer import AssetBundle
 
 # Importing the generator modules registers their categories.
-from asset_pipeline.procedural import appliances, furniture, objects, storage
+from asset_pipeline.procedural import (
+    appliances,
+    furniture,
+    home,
+    leisure,
+    objects,
+    small_items,
+    storage,
+    work,
+)
 from asset_pipeline.procedural.registry import CATEGORIES, generate_asset
 
 # Catalogue order: furniture, storage and fixtures, appliances and decor, small objects.
-_ORDER = {m.__name__: i for i, m in enumerate((furniture, storage, appliances, objects))}
+_ORDER = {
+    m.__name__: i
+    for i, m in enumerate(
+        (furniture, home, storage, appliances, leisure, work, objects, small_items)
+    )
+}
 _SORTED = sorted(CATEGORIES.items(), key=lambda item: _ORDER[item[1].builder.__module__])
 CATEGORIES.clear()
 CATEGORIES.update(_SORTED)

@@ -1,3 +1,0 @@
-"""Generators of small items categories (filled in by the category work of issue 15)."""
-
-from __future__ import annotations

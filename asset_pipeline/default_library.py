@@ -20,6 +20,9 @@ from holomj.library.store import AssetLibrary
 
 VERSION_FILE = ".default_version"
 PROCEDURAL_SOURCE = "holomj procedural"
+# Assets made on demand (holomj.library.synthesis) name the generator version in their ids:
+# a refresh removes them with the stale procedural assets.
+STALE_SOURCES = frozenset({PROCEDURAL_SOURCE, "holomj synthesised", "holomj proxy"})
 
 
 def ensure_default_library(root: Path | None = None, *, force: bool = False) -> Path:
@@ -47,7 +50,7 @@ def ensure_default_library(root: Path | None = None, *, force: bool = False) -> 
             stale = [
                 i
                 for i in library.ids()
-                if library.get(i).meta.source == PROCEDURAL_SOURCE
+                if library.get(i).meta.source in STALE_SOURCES
                 and i not in fresh
                 and not i.startswith("builtin:")
             ]

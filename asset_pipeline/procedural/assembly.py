@@ -35,6 +35,8 @@ class AssetDesign:
     friction: float
     placement: tuple[str, ...]
     parts: tuple[Part, ...]
+    attributes: tuple[tuple[str, str], ...] = ()  # honoured (colour, material, shape, style)
+    proxy: bool = False  # a stand-in from a parametric family (asset_pipeline.procedural.proxies)
 
 
 CLEARANCE = 0.05  # free height required above every support surface
@@ -120,6 +122,10 @@ def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBun
         "source": SOURCE,
         "license": LICENSE,
     }
+    if design.attributes:
+        meta["attributes"] = dict(design.attributes)
+    if design.proxy:
+        meta["proxy"] = True
     return AssetBundle(meta=validate_model(AssetMeta, meta, design.id), files=files)
 
 

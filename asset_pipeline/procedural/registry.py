@@ -14,7 +14,7 @@ import math
 import zlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 
@@ -22,6 +22,9 @@ from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.procedural.assembly import AssetDesign, assemble
 from asset_pipeline.procedural.parts import Part, Vec3
 from holomj.errors import InputError, closest_names
+
+if TYPE_CHECKING:
+    from asset_pipeline.procedural.attributes import Attributes
 
 Kind = Literal["furniture", "object"]
 SIZE_TOLERANCE = 1e-3  # generated bbox vs requested size, and round footprints' x vs y
@@ -228,35 +231,60 @@ def rng_for(category_name: str, seed: int) -> np.random.Generator:
 
 
 def design_for(
-    category_name: str, asset_id: str, size: Vec3 | None = None, seed: int = 0
+    category_name: str,
+    asset_id: str,
+    size: Vec3 | None = None,
+    seed: int = 0,
+    attributes: Attributes | None = None,
 ) -> tuple[AssetDesign, Vec3]:
-    """The design of asset ``asset_id`` (not yet assembled) and its checked size."""
+    """The design of asset ``asset_id`` (not yet assembled) and its checked size.
+
+    With ``attributes`` (:mod:`.attributes`) the design honours the colour, material, shape and
+    style asked where it can; the honoured ones are recorded in the design and its description
+    says so. Without them the design is exactly the category generator's.
+    """
     info = category_info(category_name)
     resolved = info.check_size(size)
-    design = info.builder(resolved, rng_for(info.name, seed))
-    description = info.description.format(**design.words)
+    honoured: dict[str, str] = {}
+    if attributes:
+        from asset_pipeline.procedural.attributes import conditioned_design, described
+
+        design, resolved, honoured = conditioned_design(info, resolved, seed, attributes)
+    else:
+        design = info.builder(resolved, rng_for(info.name, seed))
+    description = " ".join(info.description.format(**design.words).split())
+    if attributes:
+        description = described(description, info.name, attributes, honoured)
     asset = AssetDesign(
         id=asset_id,
         category=info.name,
-        description=" ".join(description.split()),
+        description=description,
         mass_kg=info.mass_for(resolved),
         friction=info.friction,
         placement=info.placement,
         parts=design.parts,
+        attributes=tuple(honoured.items()),
     )
     return asset, resolved
 
 
 def generate_asset(
-    category_name: str, asset_id: str, size: Vec3 | None = None, seed: int = 0
+    category_name: str,
+    asset_id: str,
+    size: Vec3 | None = None,
+    seed: int = 0,
+    attributes: Attributes | None = None,
 ) -> AssetBundle:
     """Build asset ``asset_id`` of a category at ``size`` (None: default) in style ``seed``.
 
-    Deterministic: the same (category, size, seed) gives byte-identical files. Raises
-    :class:`~holomj.errors.InputError` for an unknown category, a size outside the category's
-    range or a negative seed.
+    ``attributes`` (colour, material, shape, style; see :mod:`.attributes`) condition the
+    design; those honoured are recorded in the metadata (``attributes``). A shape may change
+    the size (a round table's footprint is square: its side is the smaller planned one).
+    Deterministic: the same (category, size, seed, attributes) gives byte-identical files.
+    Raises :class:`~holomj.errors.InputError` for an unknown category, a size outside the
+    category's range or a negative seed.
     """
-    asset, resolved = design_for(category_name, asset_id, size, seed)
+    asset, resolved = design_for(category_name, asset_id, size, seed, attributes)
     return assemble(asset, expected_size=resolved)
 
 

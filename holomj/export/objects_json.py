@@ -3,7 +3,7 @@
 All poses are world frame at the scene's initial state (metres, quaternions w, x, y, z)::
 
     schema_version, scene, rooms [{id, type, area_m2, polygon}],
-    objects [{id, category, asset, room, static, position, quat, yaw_deg, scale, mass_kg,
+    objects [{id, category, proxy, asset, room, static, position, quat, yaw_deg, scale, mass_kg,
               aabb {min, max}, support, surfaces [{index, height, polygon, area_m2}],
               body, joint}],
     doors [{id, kind, rooms, position, width, leaves [{body, joint, range_rad, hinge, axis}]}],
@@ -81,6 +81,7 @@ def _object(compiled: CompiledScene, data: mujoco.MjData, obj: Any) -> dict[str,
     return {
         "id": obj.id,
         "category": meta.category if meta is not None else None,
+        "proxy": bool(meta is not None and meta.proxy) or bool(getattr(obj, "proxy", None)),
         "asset": obj.asset,
         "room": obj.room,
         "static": joint < 0,

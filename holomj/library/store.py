@@ -88,6 +88,13 @@ class AssetLibrary:
                 f"asset {asset_id!r} is not in library {self.name!r}", fix=hint
             ) from None
 
+    def add_loaded(self, asset_id: str, folder: Path) -> LibraryAsset:
+        """Load an asset written into ``folder`` after this view was opened (an asset made on
+        demand, :mod:`holomj.jobs.synthesis`) and make it part of this view."""
+        asset = _load_asset(Path(folder), asset_id)
+        self._assets[asset_id] = asset
+        return asset
+
     def categories(self) -> list[str]:
         """All categories, sorted."""
         return sorted({a.meta.category for a in self._assets.values()})

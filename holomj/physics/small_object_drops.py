@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from holomj.errors import HolomjError
-from holomj.layout.room_furnishing import AssetChooser
+from holomj.layout.room_furnishing import AssetChooser, on_demand_record
 from holomj.library.store import AssetLibrary
 from holomj.physics.spawn import populate
 from holomj.seeds import stage_rng
@@ -69,7 +69,12 @@ def drop_small_objects(
             for pick in picks:
                 requests.append((pick.asset_id, 1))
                 out.picks.append(
-                    {"receptacle": receptacle_id, "name": small.name, "asset": pick.asset_id}
+                    {
+                        "receptacle": receptacle_id,
+                        "name": small.name,
+                        "asset": pick.asset_id,
+                        **on_demand_record(pick),
+                    }
                 )
         record: dict[str, Any] = {"receptacle": receptacle_id, "failures": failures}
         if requests:

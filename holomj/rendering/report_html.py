@@ -202,7 +202,7 @@ def _object_row(
     if obj.asset in library:
         meta = library.get(obj.asset).meta
         sx, sy, sz = obj.scale3
-        category = meta.category
+        category = f"{meta.category} (proxy)" if meta.proxy or obj.proxy else meta.category
         size = f"{meta.size[0] * sx:.2f} × {meta.size[1] * sy:.2f} × {meta.size[2] * sz:.2f}"
         kg = obj.mass_kg if obj.mass_kg is not None else meta.mass * sx * sy * sz
         mass = f"{kg:.2f}"

@@ -23,13 +23,35 @@ Ranking is by score, ties by asset id, so results are deterministic.
 
 Embeddings of asset texts and thumbnails are cached in ``LIB/.cache/retrieval/``
 (:mod:`holomj.retrieval.cache`); query embeddings are cached in memory per retriever.
+
+**Assets on demand** (with a ``synthesiser``, :class:`holomj.jobs.synthesis.LibrarySynthesiser`,
+as ``generate`` passes one): :meth:`AssetRetriever.choose` reads the attributes the description
+asks (colour, material, shape, style) and
+
+- when the category (or an alias) has library assets, chooses among those whose attributes
+  (recorded, else read from their description) match the colour, material and shape asked
+  ("library match"); when none does, it synthesises one of that category with them
+  ("synthesised"), or, without a generator for the category, takes the best asset and says the
+  attributes were not honoured ("library");
+- when the category has no library asset, it synthesises one if a generator exists, else takes
+  another category only when the two category names are nearly synonyms, text cosine at least
+  :data:`SIMILARITY_FLOOR` ("similar category"), and otherwise builds a proxy ("proxy"): another
+  category is never passed off as the asked one.
+
+Assets made on demand are never ranked (their ids are recomputed from the request), so a run's
+choices do not depend on what earlier runs synthesised. Without a synthesiser, ``choose`` ranks
+as before (every asset scored when the category is unknown, with a note).
 """
 
 from __future__ import annotations
 
+import functools
+import json
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from importlib import resources
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -47,6 +69,13 @@ from holomj.retrieval.visual import VisualScorer, best_view_score, visual_scorer
 from holomj.spec.assets import PLACEMENTS
 
 SIZE_CAP_M = 1.5
+SIMILARITY_FLOOR = 0.8
+"""Least text cosine between two category names for one to stand in for the other (with the
+default MiniLM encoder, couch/sofa and bookcase/bookshelf pass; treadmill/desk, 0.2-0.4, and
+kettlebell/pot do not). Listed aliases (``category_aliases.json``) always pass."""
+SYNTH_STYLES = 4
+"""Style seeds an asset made on demand is drawn from (the run's generator picks one)."""
+ON_DEMAND_SOURCES = frozenset({"holomj synthesised", "holomj proxy"})
 VARIED_POOL = 3
 """``varied``: instances draw from the best asset and up to this many more of its category."""
 NO_CLIP_NOTE = (
@@ -74,13 +103,40 @@ class ScoredAsset:
     visual: float | None
     text: float
     size: float
+    how: str = "ranked"
+    attributes_asked: dict[str, str] | None = None
+    attributes_honoured: dict[str, str] | None = None
+    proxy: bool = False
 
 
 def asset_text(asset: LibraryAsset) -> str:
-    """What T compares a description with: ``"dining chair: a oak dining chair ..."``."""
+    """What T compares a description with: ``"nightstand (bedside table, night table): a
+    walnut nightstand ..."``: the category, its other names, the description."""
     words = " ".join(asset.meta.category.replace("_", " ").replace("-", " ").split())
+    others = [n for n in category_synonyms().get(asset.meta.category, ()) if n != words]
+    if others:
+        words = f"{words} ({', '.join(others[:MAX_SYNONYMS])})"
     description = " ".join(asset.meta.description.split())
     return f"{words}: {description}" if description else words
+
+
+MAX_SYNONYMS = 4
+
+
+@functools.cache
+def category_synonyms() -> dict[str, tuple[str, ...]]:
+    """Other names of each category, from the knowledge base's object kinds (data only: the
+    kinds' names and aliases in ``holomj/data/knowledge/objects.json``)."""
+    data = json.loads(
+        resources.files("holomj.data").joinpath("knowledge/objects.json").read_text("utf-8")
+    )
+    out: dict[str, list[str]] = {}
+    for name, kind in data.get("objects", {}).items():
+        names = out.setdefault(kind["category"], [])
+        for word in [name, *kind.get("aliases", [])]:
+            if word not in names:
+                names.append(word)
+    return {k: tuple(v) for k, v in out.items()}
 
 
 def size_discrepancy(
@@ -111,9 +167,12 @@ class AssetRetriever:
         encoder: TextEncoder | None = None,
         visual: VisualScorer | None = None,
         weights: RetrievalWeights = RetrievalWeights(),
+        synthesiser: Any = None,
     ) -> None:
         self.library = library
         self.weights = weights
+        self.synthesiser = synthesiser
+        self._category_vectors: dict[str, np.ndarray] = {}
         self.notes: list[str] = []
         self._encoder = encoder
         self._visual = visual
@@ -183,6 +242,10 @@ class AssetRetriever:
             raise InputError(
                 f"unknown variance {variance!r}", where=description, fix="use same or varied"
             )
+        if self.synthesiser is not None:
+            return self._choose_on_demand(
+                description, quantity, variance, rng, size, placement, category
+            )
         ranking = self.rank(
             description,
             size=size,
@@ -190,6 +253,12 @@ class AssetRetriever:
             category=category,
             limit=max(1, len(self._assets)),
         )
+        return self._pick(ranking, quantity, variance, rng)
+
+    def _pick(
+        self, ranking: list[ScoredAsset], quantity: int, variance: str, rng: np.random.Generator
+    ) -> list[ScoredAsset]:
+        """``quantity`` picks from ``ranking`` (best first), as :meth:`choose` describes."""
         best = ranking[0]
         if variance == "same" or quantity == 1:
             return [best] * quantity
@@ -203,6 +272,197 @@ class AssetRetriever:
         chosen = [picks[k % len(picks)] for k in range(quantity)]
         order = rng.permutation(quantity)
         return [chosen[int(k)] for k in order]
+
+    # -- assets on demand --------------------------------------------------------------------
+
+    def _choose_on_demand(
+        self,
+        description: str,
+        quantity: int,
+        variance: str,
+        rng: np.random.Generator,
+        size: tuple[float, float, float] | None,
+        placement: str,
+        category: str | None,
+    ) -> list[ScoredAsset]:
+        syn = self.synthesiser
+        asked = syn.parse(description, category)
+        hard = {k: v for k, v in asked.items() if k != "style"}
+        candidates = self._own_candidates(description, placement, category)
+        if category is None and candidates:
+            best = self._ranked(description, size, candidates)[0]
+            category = best.category
+            candidates = [a for a in candidates if a.meta.category == category]
+        if candidates:
+            ranking = self._ranked(description, size, candidates)
+            if not hard:
+                picks = self._pick(ranking, quantity, variance, rng)
+                return [self._labelled(p, "library", asked) for p in picks]
+            matching = [
+                s for s in ranking if _matches(syn.recorded(self.library.get(s.asset_id)), hard)
+            ]
+            if matching:
+                picks = self._pick(matching, quantity, variance, rng)
+                return [self._labelled(p, "library match", asked) for p in picks]
+            generator = syn.generator_for(category) or syn.generator_for(ranking[0].category)
+            if generator is None:
+                self._note(
+                    f"no {ranking[0].category} asset is {_words(hard)} and no generator makes "
+                    f"one: {description!r} gets the best {ranking[0].category} as it is"
+                )
+                picks = self._pick(ranking, quantity, variance, rng)
+                return [self._labelled(p, "library", asked) for p in picks]
+            return [self._synthesised(description, generator, size, asked, rng)] * quantity
+        generator = syn.generator_for(category)
+        if generator is not None:
+            return [self._synthesised(description, generator, size, asked, rng)] * quantity
+        similar = self._similar_category(category, placement)
+        if similar is not None:
+            self._note(
+                f"no {placement} asset of category {category!r} in library "
+                f"{self.library.name!r}: its near synonym {similar!r} stands in for "
+                f"{description!r}"
+            )
+            pool = [
+                a
+                for a in self._placed(placement)
+                if normalise_category(a.meta.category) == normalise_category(similar)
+            ]
+            ranking = self._ranked(description, size, pool)
+            picks = self._pick(ranking, quantity, variance, rng)
+            return [self._labelled(p, "similar category", asked) for p in picks]
+        return [self._proxy(description, category, size, placement, asked)] * quantity
+
+    def _placed(self, placement: str) -> list[LibraryAsset]:
+        return [
+            a
+            for a in self._assets
+            if placement in a.meta.placement and a.meta.source not in ON_DEMAND_SOURCES
+        ]
+
+    def _own_candidates(
+        self, description: str, placement: str, category: str | None
+    ) -> list[LibraryAsset]:
+        """The library's own assets (none made on demand) of ``category`` or its aliases."""
+        if placement not in PLACEMENTS:
+            raise InputError(
+                f"unknown placement {placement!r}",
+                where=description,
+                fix=f"use one of: {', '.join(PLACEMENTS)}",
+            )
+        placed = self._placed(placement)
+        if category is None:
+            return placed
+        key = normalise_category(category)
+        exact = [a for a in placed if normalise_category(a.meta.category) == key]
+        if exact:
+            return exact
+        aliases = {normalise_category(c) for c in category_aliases().get(key, [])}
+        return [a for a in placed if normalise_category(a.meta.category) in aliases]
+
+    def _ranked(
+        self,
+        description: str,
+        size: tuple[float, float, float] | None,
+        candidates: Sequence[LibraryAsset],
+    ) -> list[ScoredAsset]:
+        scored = self._score(description, size, candidates)
+        scored.sort(key=lambda s: (-s.score, s.asset_id))
+        return scored
+
+    def _labelled(self, pick: ScoredAsset, how: str, asked: dict[str, str]) -> ScoredAsset:
+        honoured: dict[str, str] = {}
+        if asked and how == "library match":
+            recorded = self.synthesiser.recorded(self.library.get(pick.asset_id))
+            honoured = {k: v for k, v in asked.items() if recorded.get(k) == v}
+        return replace(pick, how=how, attributes_asked=asked, attributes_honoured=honoured)
+
+    def _synthesised(
+        self,
+        description: str,
+        category: str,
+        size: tuple[float, float, float] | None,
+        asked: dict[str, str],
+        rng: np.random.Generator,
+    ) -> ScoredAsset:
+        target = None if size is None else _asset_size(_check_size(size, description))
+        seed = int(rng.integers(SYNTH_STYLES))
+        made = self.synthesiser.synthesise(category, target, seed, asked)
+        for note in made.notes:
+            self._note(f"{description!r}: {made.asset_id}: {note}")
+        return self._scored_new(description, size, made, "synthesised", asked)
+
+    def _proxy(
+        self,
+        description: str,
+        category: str | None,
+        size: tuple[float, float, float] | None,
+        placement: str,
+        asked: dict[str, str],
+    ) -> ScoredAsset:
+        label = category or description
+        target = _asset_size(_check_size(size, description)) if size is not None else None
+        if target is None:
+            target = _DEFAULT_PROXY_SIZE.get(placement, (0.5, 0.5, 0.5))
+        made = self.synthesiser.proxy(label, target, placement, asked)
+        self._note(
+            f"no {placement} asset or generator of category {label!r}: {description!r} is a "
+            f"proxy ({made.family}, {made.asset_id})"
+        )
+        for note in made.notes:
+            self._note(f"{description!r}: {made.asset_id}: {note}")
+        return self._scored_new(description, size, made, "proxy", asked)
+
+    def _scored_new(
+        self,
+        description: str,
+        size: tuple[float, float, float] | None,
+        made: Any,
+        how: str,
+        asked: dict[str, str],
+    ) -> ScoredAsset:
+        asset = self.library.get(made.asset_id)
+        text = float(
+            (self.encoder.encode([asset_text(asset)])[0] * self._text_query(description)).sum()
+        )
+        sizes = 0.0
+        if size is not None:
+            sizes = size_discrepancy(_check_size(size, description), asset.meta.size)
+        w = self.weights
+        return ScoredAsset(
+            asset_id=made.asset_id,
+            category=made.category,
+            score=float((w.text + w.visual) * text - w.size * sizes),
+            visual=None,
+            text=text,
+            size=float(sizes),
+            how=how,
+            attributes_asked=asked,
+            attributes_honoured=dict(made.attributes_honoured),
+            proxy=how == "proxy",
+        )
+
+    def _similar_category(self, category: str | None, placement: str) -> str | None:
+        """The library category whose name is closest to ``category`` in text, when its cosine
+        is at least :data:`SIMILARITY_FLOOR`; else None."""
+        if category is None:
+            return None
+        names = sorted({a.meta.category for a in self._placed(placement)})
+        if not names:
+            return None
+        wanted = self._category_vector(category)
+        best, best_name = -1.0, None
+        for name in names:
+            value = float((self._category_vector(name) * wanted).sum())
+            if value > best:
+                best, best_name = value, name
+        return best_name if best >= SIMILARITY_FLOOR else None
+
+    def _category_vector(self, category: str) -> np.ndarray:
+        words = " ".join(category.replace("_", " ").replace("-", " ").split()).lower()
+        if words not in self._category_vectors:
+            self._category_vectors[words] = self.encoder.encode([words])[0].astype(np.float64)
+        return self._category_vectors[words]
 
     # -- candidates -------------------------------------------------------------------------
 
@@ -349,6 +609,28 @@ class AssetRetriever:
         return views
 
 
+_DEFAULT_PROXY_SIZE = {
+    "floor": (0.6, 0.6, 0.8),
+    "wall": (0.04, 0.8, 0.6),
+    "ceiling": (0.5, 0.5, 0.4),
+    "object": (0.15, 0.15, 0.15),
+}
+
+
+def _asset_size(size: tuple[float, float, float]) -> tuple[float, float, float]:
+    """A plan size (width, depth, height) as an asset size (x = depth, y = width, z)."""
+    width, depth, height = size
+    return (depth, width, height)
+
+
+def _matches(recorded: dict[str, str], hard: dict[str, str]) -> bool:
+    return all(recorded.get(k) == v for k, v in hard.items())
+
+
+def _words(attributes: dict[str, str]) -> str:
+    return " ".join(attributes.values())
+
+
 def _check_size(size: Sequence[float], description: str) -> tuple[float, float, float]:
     values = tuple(float(v) for v in size)
     if len(values) != 3 or not all(np.isfinite(v) and v > 0 for v in values):
@@ -366,11 +648,15 @@ def retriever_for(
     clip_model: str | None = None,
     encoder: TextEncoder | None = None,
     weights: RetrievalWeights = RetrievalWeights(),
+    synthesiser: Any = None,
 ) -> AssetRetriever:
     """A retriever for ``library`` with the visual term when CLIP weights are configured.
 
     ``clip_weights`` (else ``$HOLOMJ_CLIP_WEIGHTS``) is a local open_clip checkpoint of the
-    architecture ``clip_model`` (else ``$HOLOMJ_CLIP_MODEL``, default ViT-B-32).
+    architecture ``clip_model`` (else ``$HOLOMJ_CLIP_MODEL``, default ViT-B-32). With a
+    ``synthesiser`` the retriever makes assets on demand (see the module docstring).
     """
     visual = visual_scorer_from_env(clip_weights, clip_model)
-    return AssetRetriever(library, encoder=encoder, visual=visual, weights=weights)
+    return AssetRetriever(
+        library, encoder=encoder, visual=visual, weights=weights, synthesiser=synthesiser
+    )

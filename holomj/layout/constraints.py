@@ -10,6 +10,12 @@ Five families, as in Holodeck (``ai2holodeck/generation/floor_objects.py``):
 * direction: ``face to`` (the object's front ray hits the target), ``face same as``,
   ``face opposite to``.
 
+Beyond Holodeck, for what prompts say (:mod:`holomj.layout.place_relations`): the global
+``corner`` (against both walls of a convex corner), ``under window`` (back to a window's wall,
+under its span), ``by window`` (close to a window), ``by door`` (near a door), ``facing window``
+and ``facing door`` (the front looks at one), and the distance
+``adjacent to`` (footprints at most 45 cm apart: a prompt's "next to", "beside").
+
 The text form is one line per object: ``coffee table-0 | middle | near, sofa-0 | face to,
 sofa-0``. The parser is tolerant of layout (case, extra spaces, list numbering, ``*``, a final
 full stop, ``_`` for a space in names) but never guesses a meaning: an unknown word, a missing or
@@ -33,6 +39,13 @@ from holomj.spec.base import FrozenModel
 ConstraintKind = Literal[
     "edge",
     "middle",
+    "corner",
+    "under_window",
+    "by_window",
+    "by_door",
+    "facing_window",
+    "facing_door",
+    "adjacent_to",
     "near",
     "far",
     "in_front_of",
@@ -45,13 +58,24 @@ ConstraintKind = Literal[
     "face_same_as",
     "face_opposite_to",
 ]
-GLOBAL_KINDS = frozenset({"edge", "middle"})
+# Global kinds that place an object by the room's corners, windows or doors.
+PLACE_KINDS = frozenset(
+    {"corner", "under_window", "by_window", "by_door", "facing_window", "facing_door"}
+)
+GLOBAL_KINDS = frozenset({"edge", "middle"}) | PLACE_KINDS
 ALL_KINDS: tuple[str, ...] = ConstraintKind.__args__  # type: ignore[attr-defined]
 
 # The phrase that writes each kind in the text form.
 KIND_PHRASE: dict[str, str] = {
     "edge": "edge",
     "middle": "middle",
+    "corner": "corner",
+    "under_window": "under window",
+    "by_window": "by window",
+    "by_door": "by door",
+    "facing_window": "facing window",
+    "facing_door": "facing door",
+    "adjacent_to": "adjacent to",
     "near": "near",
     "far": "far",
     "in_front_of": "in front of",
@@ -78,6 +102,10 @@ PHRASES: dict[str, tuple[str, ...]] = {
     "facing": ("face_to",),
     "next to": ("side_of",),
     "beside": ("side_of",),
+    "in corner": ("corner",),
+    "in the corner": ("corner",),
+    "near window": ("by_window",),
+    "near door": ("by_door",),
 }
 _IGNORED = frozenset({"", "n/a", "na", "none", "-"})
 

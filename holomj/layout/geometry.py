@@ -22,6 +22,7 @@ from shapely.geometry.polygon import orient
 
 FRONT: tuple[tuple[int, int], ...] = ((1, 0), (0, 1), (-1, 0), (0, -1))
 EPS = 1e-6
+ADJACENT_GAP_M = 0.45  # 'adjacent to': footprints at most this far apart
 
 
 def yaw_index(yaw_deg: float) -> int:
@@ -441,6 +442,7 @@ def relation_holds(
 
     * near / far: the Euclidean gap between the footprints, each grown by
       ``footprint_buffer`` per side as Holodeck grows them, is ``<= near`` / ``>= far``;
+    * adjacent to: the gap between the footprints is at most ``ADJACENT_GAP_M``;
     * in front of / behind: A's centre lies beyond T's front / back face, within T's width
       sideways, and at most ``in_front_max_gap`` away along T's axis;
     * side of: A's centre lies within T's depth band and beyond T's width (left or right);
@@ -455,10 +457,12 @@ def relation_holds(
     dx, dy = xa - xt, ya - yt
     hxa, hya = half_extents(size_a[0], size_a[1], ka)
     hxt, hyt = half_extents(size_t[0], size_t[1], kt)
-    if kind in ("near", "far"):
+    if kind in ("near", "far", "adjacent_to"):
         gx = np.maximum(np.abs(dx) - (hxa + hxt), 0.0)
         gy = np.maximum(np.abs(dy) - (hya + hyt), 0.0)
         gap = np.hypot(gx, gy)
+        if kind == "adjacent_to":
+            return gap <= ADJACENT_GAP_M + EPS
         return gap <= th.near_raw_gap + EPS if kind == "near" else gap >= th.far_raw_gap - EPS
     if kind == "center_aligned":
         return np.minimum(np.abs(dx), np.abs(dy)) < th.align_tolerance - EPS

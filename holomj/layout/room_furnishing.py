@@ -25,6 +25,7 @@ from shapely import affinity
 from shapely.geometry import Point, Polygon, box
 
 from holomj.errors import HolomjError
+from holomj.layout.relation_constraints import relation_constraints, relation_verdicts
 from holomj.layout.room_problem import (
     LayoutDoor,
     LayoutObject,
@@ -32,6 +33,7 @@ from holomj.layout.room_problem import (
     LayoutWindow,
     RoomProblem,
 )
+from holomj.layout.rugs import Anchor, lay_rug
 from holomj.layout.solve import LayoutResult, Placement, solve_room
 from holomj.layout.wall_objects import (
     ABOVE_GAP_M,
@@ -43,6 +45,7 @@ from holomj.layout.wall_objects import (
 from holomj.layout.window_moves import raise_sill, relocate_window
 from holomj.library.store import AssetLibrary
 from holomj.seeds import stage_rng
+from holomj.spec.decor import DECOR_CATEGORIES
 from holomj.spec.plan import PlanObject, PlanRoom, instance_name
 from holomj.spec.scene import Door, Room, SceneObject, Window
 from holomj.spec.walls import Wall
@@ -53,6 +56,7 @@ REQUESTED_PRIORITY = 10
 # The layout keeps a walkway this wide (radius) between every two doors of a room: 5 cm more than
 # the navigation map's agent, so that its finer grid and real collider boxes still find the path.
 WALKER_RADIUS_M = 0.3
+DOOR_CLEARANCE_M = 1.0  # floor kept free in front of a door, on the room's side
 FIXED_CATEGORIES = frozenset(
     {
         "kitchen_counter",
@@ -127,6 +131,7 @@ class RoomFurniture:
     warnings: list[str] = field(default_factory=list)
     windows: list[Window] = field(default_factory=list)  # the room's windows, after any move
     changes: list[str] = field(default_factory=list)  # what the plan changed to fit, and why
+    relations: list[dict[str, Any]] = field(default_factory=list)  # the prompt's, judged
 
 
 def object_id(room_id: str, instance: str) -> str:
@@ -199,6 +204,7 @@ def furnish_room(
     )
     out.windows = windows
     out.layout = _layout_record(result)
+    out.relations = relation_verdicts(plan_room, result.constraints)
     out.warnings.extend(result.warnings)
     by_name = {o.name: o for o in plan_room.objects}
     for item in result.unplaced:
@@ -222,6 +228,7 @@ def furnish_room(
         plan_obj = by_name[instance.rsplit("-", 1)[0]]
         if plan_obj.on_top:
             out.receptacles.append((oid, plan_obj))
+    _lay_rugs(plan_room, room, context, assets.floor, result, library, out)
     _hang(plan_room, room, context, windows, assets.wall, floor_items, library, seed, out)
     _hang_from_ceiling(plan_room, room, context, assets.ceiling, floor_items, library, out)
     return out
@@ -384,8 +391,22 @@ def _retrieve(
                 value = getattr(pick, key, None)
                 if value is not None:
                     record[key] = round(value, 4) if isinstance(value, float) else value
+            record.update(on_demand_record(pick))
             out.picks.append(record)
     return chosen
+
+
+def on_demand_record(pick: Any) -> dict[str, Any]:
+    """What a pick says about the attributes asked and honoured, and how (library match,
+    synthesised, proxy...); empty for a pick that does not say (a plain ranking)."""
+    if getattr(pick, "attributes_asked", None) is None:
+        return {}
+    return {
+        "attributes_asked": pick.attributes_asked,
+        "attributes_honoured": pick.attributes_honoured or {},
+        "how": pick.how,
+        "proxy": bool(pick.proxy),
+    }
 
 
 def _hung_above(
@@ -465,6 +486,8 @@ def _problem(
     priorities = _priorities(plan_room)
     objects = []
     for instance, asset_id in assets.items():
+        if _is_decor(library, asset_id):
+            continue  # laid after the layout (holomj.layout.rugs)
         depth, width, height = library.get(asset_id).meta.size
         above = hung.get(instance.rsplit("-", 1)[0])
         if above is not None:
@@ -488,9 +511,52 @@ def _problem(
         doors=doors,
         windows=windows,
         objects=objects,
+        constraints=relation_constraints(plan_room, [o.id for o in objects]),
         constraints_text="\n".join(plan_room.constraints) or None,
-        settings=LayoutSettings(walker_radius_m=WALKER_RADIUS_M),
+        settings=LayoutSettings(walker_radius_m=WALKER_RADIUS_M, door_clearance_m=DOOR_CLEARANCE_M),
     )
+
+
+def _is_decor(library: AssetLibrary, asset_id: str) -> bool:
+    return library.get(asset_id).meta.category in DECOR_CATEGORIES
+
+
+def _lay_rugs(
+    plan_room: PlanRoom,
+    room: Room,
+    context: RoomContext,
+    assets: dict[str, str],
+    result: LayoutResult,
+    library: AssetLibrary,
+    out: RoomFurniture,
+) -> None:
+    """Rugs under the room's main piece (see :mod:`holomj.layout.rugs`)."""
+    rugs = [(i, a) for i, a in assets.items() if _is_decor(library, a)]
+    if not rugs:
+        return
+    anchors = [
+        Anchor(p.x, p.y, p.yaw_deg, p.width, p.depth, library.get(assets[i]).meta.category)
+        for i, p in result.placements.items()
+    ]
+    inset = context.wall_thickness / 2 + LAYOUT_MARGIN_M
+    polygon = Polygon(room.polygon).buffer(-inset, join_style="mitre")
+    for instance, asset_id in rugs:
+        depth, width, _ = library.get(asset_id).meta.size
+        pose = lay_rug(polygon, (depth, width), anchors)
+        if isinstance(pose, str):
+            out.unplaced.append({"object": instance, "stage": "layout", "reason": pose})
+            continue
+        out.objects.append(
+            SceneObject(
+                id=object_id(room.id, instance),
+                asset=asset_id,
+                position=(pose.x, pose.y, 0.0),
+                yaw_deg=pose.yaw_deg,
+                scale=(pose.scale, pose.scale, 1.0) if pose.scale != 1.0 else 1.0,
+                static=True,
+                room=room.id,
+            )
+        )
 
 
 def _footprint(p: Placement) -> Polygon:

@@ -24,11 +24,18 @@ from shapely.geometry.polygon import orient
 from holomj.errors import SpecError, closest_names
 from holomj.layout import geometry as geo
 from holomj.layout.constraints import (
+    PLACE_KINDS,
     Constraint,
     ObjectName,
     ParsedConstraints,
     normalize_name,
     parse_constraint_text,
+)
+from holomj.layout.place_relations import (
+    ADJACENT_GAP_M,
+    place_holds,
+    place_reason,
+    room_anchors,
 )
 from holomj.spec.base import FrozenModel, PositiveFloat, Vec2, read_json, validate_model
 
@@ -346,9 +353,7 @@ class PreparedRoom:
         for index, obj in enumerate(problem.objects):
             width, depth, height = problem.object_size_m(obj)
             blocked = tuple(
-                k
-                for k, w in enumerate(problem.windows)
-                if height is None or height > w.sill_height
+                k for k, w in enumerate(problem.windows) if height is None or height > w.sill_height
             )
             self.items.append(
                 Item(index, obj.id, width, depth, height, bool(blocked), obj.priority, blocked)
@@ -372,6 +377,11 @@ class PreparedRoom:
             if swing is not None:
                 zone = zone.union(swing)
             self.door_zones.append(zone)
+        self.anchors = room_anchors(
+            self.walls,
+            [(w.position, w.width) for w in problem.windows],
+            [(d.position, d.width) for d in problem.doors],
+        )
         self.window_zones = [
             geo.window_zone(w.position, w.width, self.walls, s.window_clearance_m)
             for w in problem.windows
@@ -454,6 +464,11 @@ class PreparedRoom:
                 if ok
                 else f"back not within {th.edge_tolerance:g} m of a wall behind it"
             )
+        if constraint.kind in PLACE_KINDS:
+            ok = bool(
+                place_holds(constraint.kind, x, y, k, item.size, self.anchors, th.edge_tolerance)
+            )
+            return ok, place_reason(constraint.kind, ok, self.anchors)
         if constraint.kind == "middle":
             rect = self.footprint(i, x, y, k)
             dist = float(self.room.exterior.distance(box(*rect)))
@@ -468,6 +483,10 @@ class PreparedRoom:
         ok = bool(
             geo.relation_holds(constraint.kind, x, y, k, item.size, xt, yt, kt, target.size, th)
         )
+        if constraint.kind == "adjacent_to":
+            gx, gy = geo.rect_gaps(self.footprint(i, x, y, k), self.footprint(j, xt, yt, kt))
+            gap = math.hypot(max(gx, 0.0), max(gy, 0.0))
+            return ok, f"gap {gap:.2f} m between footprints (needs <= {ADJACENT_GAP_M:g} m)"
         if constraint.kind in ("near", "far"):
             gx, gy = geo.rect_gaps(self.footprint(i, x, y, k), self.footprint(j, xt, yt, kt))
             gap = math.hypot(max(gx, 0.0), max(gy, 0.0))

@@ -24,6 +24,7 @@ from shapely.geometry import box
 
 from holomj.errors import InputError
 from holomj.layout import geometry as geo
+from holomj.layout.open_pockets import open_pockets
 from holomj.layout.room_problem import PreparedRoom, RoomProblem
 from holomj.layout.solver_cpsat import corridor_obstacles, solve_cpsat
 from holomj.layout.solver_greedy import insert_unplaced, satisfied_weight, solve_greedy
@@ -54,6 +55,7 @@ class ConstraintReport(BaseModel):
     weight: float
     satisfied: bool
     detail: str
+    source: str | None = None
 
 
 class UnplacedObject(BaseModel):
@@ -171,6 +173,7 @@ def solve_room(
                 )
     poses, reasons = _enforce_hard(prep, poses, reasons, warnings)
     poses = snap_to_walls(prep, poses)
+    poses = open_pockets(prep, poses)
     return _report(prep, poses, reasons, start, used, status, warnings)
 
 
@@ -380,6 +383,7 @@ def _report(
                 weight=c.weight,
                 satisfied=ok,
                 detail=detail,
+                source=c.source,
             )
         )
     unplaced = [

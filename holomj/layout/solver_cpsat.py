@@ -42,6 +42,13 @@ import numpy as np
 from ortools.sat.python import cp_model
 
 from holomj.layout import geometry as geo
+from holomj.layout.place_relations import (
+    ADJACENT_GAP_M,
+    BY_DOOR_GAP_M,
+    BY_WINDOW_GAP_M,
+    CORNER_TOLERANCE_M,
+    under_window_overlap,
+)
 from holomj.layout.room_problem import PreparedRoom
 
 Pose = tuple[int, int, int]
@@ -209,6 +216,14 @@ class _Model:
                 self._edge(s, a)
             elif c.kind == "middle":
                 self._middle(s, a)
+            elif c.kind == "corner":
+                self._corner(s, a)
+            elif c.kind == "under_window":
+                self._under_window(s, a)
+            elif c.kind in ("by_window", "by_door"):
+                self._by_opening(s, a, c.kind)
+            elif c.kind in ("facing_window", "facing_door"):
+                self._facing_opening(s, a, c.kind)
             else:
                 self._relation(s, c.kind, a, prep.index[c.target])
 
@@ -278,13 +293,129 @@ class _Model:
             )
         self.m.add_no_overlap_2d(fx, fy)
 
+    def _corner(self, s: cp_model.IntVar, a: int) -> None:
+        """Both walls of some convex corner within the edge tolerance of the footprint."""
+        prep, m = self.prep, self.m
+        tol = min(prep.thresholds.edge_tolerance, CORNER_TOLERANCE_M)
+        options = []
+        for n, c in enumerate(prep.anchors.corners):
+            lit = self._lit(f"c{len(self.s)}_{n}")
+            options.append(lit)
+            hx, hy = self.half(a, 0, "down"), self.half(a, 1, "down")
+            # conservative: the true half size is at least the rounded-down one
+            if c.sx > 0:
+                m.add(self.x[a] - hx <= prep.units_down(c.x + tol)).only_enforce_if(lit)
+            else:
+                m.add(self.x[a] + hx >= prep.units_up(c.x - tol)).only_enforce_if(lit)
+            if c.sy > 0:
+                m.add(self.y[a] - hy <= prep.units_down(c.y + tol)).only_enforce_if(lit)
+            else:
+                m.add(self.y[a] + hy >= prep.units_up(c.y - tol)).only_enforce_if(lit)
+        self._any(s, options)
+
+    def _under_window(self, s: cp_model.IntVar, a: int) -> None:
+        """Back to a window's wall within the edge tolerance, overlapping the window's span."""
+        prep, m = self.prep, self.m
+        item = prep.items[a]
+        tol, hd, hw = prep.thresholds.edge_tolerance, item.depth / 2, item.width / 2
+        options = []
+        for n, w in enumerate(prep.anchors.windows):
+            k = w.wall.facing_k
+            if k is None:
+                continue
+            lit = self._lit(f"u{len(self.s)}_{n}")
+            options.append(lit)
+            m.add_implication(lit, self.o[a][k])
+            need = under_window_overlap(item.width, w)
+            x0, x1, y0, y1 = w.box
+            wall_x, wall_y = w.wall.a
+            if k in (0, 2):  # a wall along y: the window spans y, the back is at x
+                lo, hi, normal, line = y0, y1, self.x[a], wall_x
+                along = self.y[a]
+            else:
+                lo, hi, normal, line = x0, x1, self.y[a], wall_y
+                along = self.x[a]
+            m.add(along >= prep.units_up(lo + need - hw)).only_enforce_if(lit)
+            m.add(along <= prep.units_down(hi - need + hw)).only_enforce_if(lit)
+            if k in (0, 1):  # the room is on the + side of the wall line
+                m.add(normal >= prep.units_up(line + hd)).only_enforce_if(lit)
+                m.add(normal <= prep.units_down(line + tol + hd)).only_enforce_if(lit)
+            else:
+                m.add(normal <= prep.units_down(line - hd)).only_enforce_if(lit)
+                m.add(normal >= prep.units_up(line - tol - hd)).only_enforce_if(lit)
+        self._any(s, options)
+
+    def _by_opening(self, s: cp_model.IntVar, a: int, kind: str) -> None:
+        """The footprint within the kind's gap of a window's or door's opening (as an L1 gap on
+        the grid, which bounds the Euclidean one)."""
+        prep, m = self.prep, self.m
+        anchors = prep.anchors
+        openings = anchors.windows if kind == "by_window" else anchors.doors
+        limit = BY_WINDOW_GAP_M if kind == "by_window" else BY_DOOR_GAP_M
+        big = prep.raster.nx + prep.raster.ny + 10
+        options = []
+        for n, opening in enumerate(openings):
+            lit = self._lit(f"b{len(self.s)}_{n}")
+            options.append(lit)
+            (cx, cy), (ox, oy) = opening.center, opening.half
+            g = prep.grid
+            # centre rounded to the grid: shrink the opening by half a cell to stay conservative
+            cxu, cyu = round(cx / g), round(cy / g)
+            sx = self.half(a, 0, "down") + prep.units_down(max(ox - g / 2, 0.0))
+            sy = self.half(a, 1, "down") + prep.units_down(max(oy - g / 2, 0.0))
+            gx = m.new_int_var(0, big, f"b{len(self.s)}_{n}gx")
+            gy = m.new_int_var(0, big, f"b{len(self.s)}_{n}gy")
+            m.add(gx >= self.x[a] - cxu - sx).only_enforce_if(lit)
+            m.add(gx >= cxu - self.x[a] - sx).only_enforce_if(lit)
+            m.add(gy >= self.y[a] - cyu - sy).only_enforce_if(lit)
+            m.add(gy >= cyu - self.y[a] - sy).only_enforce_if(lit)
+            m.add(gx + gy <= prep.units_down(limit)).only_enforce_if(lit)
+        self._any(s, options)
+
+    def _facing_opening(self, s: cp_model.IntVar, a: int, kind: str) -> None:
+        """The front ray from the centre meets a window's or door's opening (the opening shrunk
+        to whole grid units, so that what the model accepts holds)."""
+        prep, m = self.prep, self.m
+        anchors = prep.anchors
+        openings = anchors.windows if kind == "facing_window" else anchors.doors
+        options = []
+        for n, opening in enumerate(openings):
+            (x0, x1, y0, y1), (ox, oy) = opening.box, opening.half
+            (cx, cy) = opening.center
+            for k, (fx, fy) in enumerate(geo.FRONT):
+                lit = self._lit(f"fo{len(self.s)}_{n}_{k}")
+                options.append(lit)
+                m.add_implication(lit, self.o[a][k])
+                if fx != 0:
+                    m.add(self.y[a] >= prep.units_up(y0)).only_enforce_if(lit)
+                    m.add(self.y[a] <= prep.units_down(y1)).only_enforce_if(lit)
+                    if fx > 0:
+                        m.add(self.x[a] <= prep.units_down(cx + ox)).only_enforce_if(lit)
+                    else:
+                        m.add(self.x[a] >= prep.units_up(cx - ox)).only_enforce_if(lit)
+                else:
+                    m.add(self.x[a] >= prep.units_up(x0)).only_enforce_if(lit)
+                    m.add(self.x[a] <= prep.units_down(x1)).only_enforce_if(lit)
+                    if fy > 0:
+                        m.add(self.y[a] <= prep.units_down(cy + oy)).only_enforce_if(lit)
+                    else:
+                        m.add(self.y[a] >= prep.units_up(cy - oy)).only_enforce_if(lit)
+        self._any(s, options)
+
+    def _any(self, s: cp_model.IntVar, options: list[cp_model.IntVar]) -> None:
+        """``s`` only when one of the options holds (never when there is none)."""
+        if options:
+            self.m.add_bool_or(options).only_enforce_if(s)
+        else:
+            self.m.add(s == 0)
+
     def _relation(self, s: cp_model.IntVar, kind: str, a: int, t: int) -> None:
         prep, m = self.prep, self.m
         th = prep.thresholds
         dx = self.x[a] - self.x[t]
         dy = self.y[a] - self.y[t]
         tag = f"r{len(self.s)}"
-        if kind == "near":
+        if kind in ("near", "adjacent_to"):
             big = prep.raster.nx + prep.raster.ny + 10
             gx = m.new_int_var(0, big, f"{tag}gx")
             gy = m.new_int_var(0, big, f"{tag}gy")
@@ -294,7 +425,10 @@ class _Model:
             m.add(gx >= -dx - sx).only_enforce_if(s)
             m.add(gy >= dy - sy).only_enforce_if(s)
             m.add(gy >= -dy - sy).only_enforce_if(s)
-            m.add(gx + gy <= prep.units_down(th.near_raw_gap)).only_enforce_if(s)
+            limit = th.near_raw_gap if kind == "near" else ADJACENT_GAP_M
+            m.add(gx + gy <= prep.units_down(limit)).only_enforce_if(s)
+            if kind == "adjacent_to":
+                return
             # Tie-break: among layouts satisfying the same constraints, prefer gaps of at most
             # NEAR_PREFERRED_M (legroom between a sofa and its coffee table, say).
             self.near_gaps.append(

@@ -18,6 +18,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from holomj.layout import geometry as geo
+from holomj.layout.constraints import PLACE_KINDS
+from holomj.layout.place_relations import place_holds
 from holomj.layout.room_problem import PreparedRoom
 
 Pose = tuple[int, int, int]  # grid units x, y and yaw index
@@ -169,6 +171,11 @@ class CandidateFinder:
             elif c.kind == "middle":
                 has_global = True
                 score += c.weight * self.middle_ok(i, k, x, y)
+            elif c.kind in PLACE_KINDS:
+                has_global = True
+                score += c.weight * place_holds(
+                    c.kind, xm, ym, k, item.size, prep.anchors, prep.thresholds.edge_tolerance
+                )
             else:
                 j = prep.index[c.target]
                 if j not in occ.poses:

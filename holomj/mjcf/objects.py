@@ -23,6 +23,7 @@ from holomj.mjcf import names
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean, yaw_quat
 from holomj.spec.assets import AssetMeta, CollisionPart
+from holomj.spec.decor import DECOR_CATEGORIES, DECOR_GROUP
 from holomj.spec.scene import SceneObject
 
 _PRIMITIVES = {
@@ -53,7 +54,7 @@ def is_furniture(obj: SceneObject, meta: AssetMeta) -> bool:
 def is_static(obj: SceneObject, meta: AssetMeta, furniture: Furniture) -> bool:
     """Whether an object gets no joint: wall- and ceiling-mounted assets always; furniture
     as the ``furniture`` option says (``as-is`` keeps the scene's flag); others by their flag."""
-    if set(meta.placement) <= {"wall", "ceiling"}:
+    if set(meta.placement) <= {"wall", "ceiling"} or meta.category in DECOR_CATEGORIES:
         return True
     if furniture != "as-is" and is_furniture(obj, meta):
         return furniture == "static"
@@ -110,6 +111,7 @@ class ObjectBuilder:
         total_volume = meta.collision_volume_m3
         default = "collision" if static else "prop"
         torsion, rolling = (0.005, 0.0001) if static else (0.01, 0.001)
+        decor = meta.category in DECOR_CATEGORIES  # colliders give mass, never contacts
         for k, part in enumerate(meta.collision):
             geom = body.add_geom(
                 name=names.object_collision(obj.id, k),
@@ -119,6 +121,8 @@ class ObjectBuilder:
                 **_collider_fields(part, scale, handles.collision_meshes.get(k)),
             )
             geom.info = f"collider {k} of object {obj.id}"
+            if decor:
+                geom.contype, geom.conaffinity, geom.group = 0, 0, DECOR_GROUP
         return body
 
     def _asset_handles(

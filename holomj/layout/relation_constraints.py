@@ -1,0 +1,145 @@
+"""A plan's relations (``a desk under the window``) as weighted layout constraints, and their
+verdicts after the layout.
+
+Every :class:`~holomj.spec.plan.PlanRelation` of a room expands into constraints over the
+instances that are in the layout, weighted :data:`RELATION_WEIGHT` (the templates' defaults
+weigh 1), with ``source`` ``prompt: <phrase>`` so that the layout's report can be read back per
+relation (:func:`relation_verdicts`). The expansion, per subject instance ``k`` (targets are
+spread over the target's instances like the template lines):
+
+=================  =========================================================================
+corner, middle,    the place constraint (``wall`` is ``edge``)
+under/by window,
+by door, wall,
+facing window/door
+next to            ``adjacent to`` (footprints at most 45 cm apart)
+near, in front of, the relation of the same name
+behind
+facing             ``face to``
+across from        ``face to`` both ways (the target's first instance faces the subject's)
+around             ``adjacent to`` + ``face to`` (chairs at a table)
+on each side of    instance 2j ``left of`` and 2j+1 ``right of`` target j, ``adjacent to``,
+                   ``face same as``
+in a row           instance k ``adjacent to``, ``face same as`` and ``center aligned`` with k-1
+=================  =========================================================================
+
+``on``, ``above`` and ``ceiling`` are kept by the plan's structure (a receptacle's small
+objects, a wall object's ``above``): they have no layout constraint and are judged on the
+finished scene.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+from holomj.layout.constraints import Constraint
+from holomj.layout.solve import ConstraintReport
+from holomj.spec.plan import PlanRelation, PlanRoom, instance_name
+
+RELATION_WEIGHT = 10.0
+SOURCE_PREFIX = "prompt: "
+_PLACE = {
+    "corner": "corner",
+    "wall": "edge",
+    "middle": "middle",
+    "under_window": "under_window",
+    "by_window": "by_window",
+    "by_door": "by_door",
+    "facing_window": "facing_window",
+    "facing_door": "facing_door",
+}
+_PAIR = {
+    "adjacent_to": ("adjacent_to",),
+    "near": ("near",),
+    "in_front_of": ("in_front_of",),
+    "behind": ("behind",),
+    "facing": ("face_to",),
+    "across_from": ("face_to",),
+    "around": ("adjacent_to", "face_to"),
+}
+STRUCTURAL_KINDS = frozenset({"on", "above", "ceiling"})
+
+
+def source_of(relation: PlanRelation) -> str:
+    """The ``source`` every constraint of ``relation`` carries."""
+    return f"{SOURCE_PREFIX}{relation.subject} {relation.kind} {relation.target or ''}".strip()
+
+
+def relation_constraints(plan_room: PlanRoom, present: Iterable[str]) -> list[Constraint]:
+    """The room's relations as constraints over the ``present`` instances (in the layout)."""
+    here = set(present)
+    counts = {o.name: o.quantity for o in plan_room.objects}
+    out: list[Constraint] = []
+    seen: set[tuple[str, str, str | None]] = set()
+
+    def add(obj: str, kind: str, target: str | None, source: str) -> None:
+        if obj not in here or (target is not None and target not in here) or obj == target:
+            return
+        c = Constraint(object=obj, kind=kind, target=target, weight=RELATION_WEIGHT, source=source)
+        if c.key not in seen:
+            seen.add(c.key)
+            out.append(c)
+
+    for rel in plan_room.relations:
+        if rel.kind in STRUCTURAL_KINDS or rel.subject not in counts:
+            continue
+        source = source_of(rel)
+        subjects = [instance_name(rel.subject, k) for k in range(counts[rel.subject])]
+        if rel.kind in _PLACE:
+            for s in subjects:
+                add(s, _PLACE[rel.kind], None, source)
+            continue
+        if rel.kind == "in_row":
+            for prev, s in zip(subjects, subjects[1:], strict=False):
+                for kind in ("adjacent_to", "face_same_as", "center_aligned"):
+                    add(s, kind, prev, source)
+            continue
+        if rel.target is None or rel.target not in counts:
+            continue
+        targets = [instance_name(rel.target, k) for k in range(counts[rel.target])]
+        if rel.kind == "both_sides":
+            for k, s in enumerate(subjects):
+                t = targets[min(k // 2, len(targets) - 1)]
+                side = "left_of" if k % 2 == 0 else "right_of"
+                for kind in (side, "adjacent_to", "face_same_as"):
+                    add(s, kind, t, source)
+            continue
+        for k, s in enumerate(subjects):
+            t = targets[k * len(targets) // len(subjects)]
+            for kind in _PAIR[rel.kind]:
+                add(s, kind, t, source)
+        if rel.kind == "across_from":
+            add(targets[0], "face_to", subjects[0], source)
+    return out
+
+
+def relation_verdicts(
+    plan_room: PlanRoom, reports: Sequence[ConstraintReport]
+) -> list[dict[str, Any]]:
+    """Per layout relation of the room: its constraints, how many hold, and whether all do."""
+    by_source: dict[str, list[ConstraintReport]] = {}
+    for report in reports:
+        if report.source and report.source.startswith(SOURCE_PREFIX):
+            by_source.setdefault(report.source, []).append(report)
+    out = []
+    for rel in plan_room.relations:
+        if rel.kind in STRUCTURAL_KINDS:
+            continue
+        found = by_source.get(source_of(rel), [])
+        held = sum(r.satisfied for r in found)
+        out.append(
+            {
+                "room": plan_room.id,
+                "subject": rel.subject,
+                "relation": rel.kind,
+                "target": rel.target,
+                "phrase": rel.phrase,
+                "constraints": len(found),
+                "satisfied": held,
+                "held": bool(found) and held == len(found),
+                "detail": "; ".join(f"{r.text}: {r.detail}" for r in found if not r.satisfied)
+                or ("no instance in the layout" if not found else "all hold"),
+            }
+        )
+    return out

@@ -1,0 +1,99 @@
+"""Rugs: laid under the furniture after the layout, never in its way.
+
+A rug is decor that furniture stands on: it takes no part in the floor layout (other objects
+may overlap it) and, in the scene, it is static and has no collider (:data:`DECOR_CATEGORIES`;
+a real rug is a few millimetres of compressible cloth, so the furniture's feet sink into its
+visual by that much and the physics stays that of the floor).
+
+Where it goes (:func:`lay_rug`): centred under the room's main piece, the first present of
+:data:`ANCHOR_CATEGORIES` (a coffee table, a dining table, a bed, ...), its long side along the
+piece's long side; else in the middle of the room. It is shifted towards the room's centre, then
+scaled down (to at most :data:`MIN_SCALE`), until it lies inside the room with
+:data:`WALL_MARGIN_M` to spare; otherwise it is not placed, with the reason.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from shapely import affinity
+from shapely.geometry import Point, Polygon, box
+
+ANCHOR_CATEGORIES = ("coffee_table", "dining_table", "bed", "bunk_bed", "sofa", "desk")
+WALL_MARGIN_M = 0.1
+MIN_SCALE = 0.6
+_STEPS = 10
+
+
+@dataclass(frozen=True)
+class Anchor:
+    """A placed floor object a rug may go under: centre, yaw, size and category."""
+
+    x: float
+    y: float
+    yaw_deg: float
+    width: float
+    depth: float
+    category: str
+
+
+@dataclass(frozen=True)
+class RugPose:
+    """Where a rug lies: centre, yaw (degrees) and the uniform scale of its footprint."""
+
+    x: float
+    y: float
+    yaw_deg: float
+    scale: float
+
+
+def lay_rug(room: Polygon, size: tuple[float, float], anchors: Sequence[Anchor]) -> RugPose | str:
+    """The pose of a rug of ``size`` (depth along its x, width along its y) in ``room``, or
+    why it does not fit."""
+    anchor = next(
+        (a for c in ANCHOR_CATEGORIES for a in anchors if a.category == c),
+        None,
+    )
+    centre = room.representative_point() if room.centroid.within(room) else room.centroid
+    if anchor is None:
+        x, y, yaw = room.centroid.x, room.centroid.y, _yaw_along_room(room)
+    else:
+        x, y = anchor.x, anchor.y
+        long_along_x = _long_axis_is_x(anchor)
+        # the rug's width (its y) is its long side: along world x at yaw 90
+        yaw = 90.0 if long_along_x else 0.0
+    inner = room.buffer(-WALL_MARGIN_M, join_style="mitre")
+    if inner.is_empty:
+        return "the room is too small for a rug"
+    scale = 1.0
+    while scale >= MIN_SCALE - 1e-9:
+        for step in range(_STEPS + 1):
+            t = step / _STEPS
+            cx, cy = x + (centre.x - x) * t, y + (centre.y - y) * t
+            if _footprint(cx, cy, yaw, size, scale).within(inner):
+                return RugPose(round(cx, 4), round(cy, 4), yaw, round(scale, 3))
+        scale -= 0.1
+    return (
+        f"a {size[1]:.2f} x {size[0]:.2f} m rug does not fit in the room even at "
+        f"{MIN_SCALE:.0%} of its size"
+    )
+
+
+def _long_axis_is_x(anchor: Anchor) -> bool:
+    quarter = round(anchor.yaw_deg / 90.0) % 2
+    # at yaw 0 an object's width runs along world y and its depth along x
+    along_x = anchor.depth if quarter == 0 else anchor.width
+    along_y = anchor.width if quarter == 0 else anchor.depth
+    return along_x >= along_y
+
+
+def _yaw_along_room(room: Polygon) -> float:
+    xmin, ymin, xmax, ymax = room.bounds
+    return 90.0 if xmax - xmin >= ymax - ymin else 0.0
+
+
+def _footprint(x: float, y: float, yaw: float, size: tuple[float, float], scale: float) -> Polygon:
+    depth, width = size[0] * scale, size[1] * scale
+    rect = box(-depth / 2, -width / 2, depth / 2, width / 2)
+    return affinity.translate(affinity.rotate(rect, yaw, origin=Point(0, 0)), x, y)

@@ -23,8 +23,6 @@ if TYPE_CHECKING:
     from holomj.spec.report import StabilityReport
 
 
-
-
 class AssetLibrary(_StoreLibrary):
     """An asset library on disk: ``AssetLibrary.open(path)``, or ``AssetLibrary.default()``."""
 

@@ -89,9 +89,7 @@ def compile_file(
         timings["check"] = time.perf_counter() - start
     report_json = {**result.to_report(), "simulation_warnings": sim_warnings}
     start = time.perf_counter()
-    write_scene_folder(
-        compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json}
-    )
+    write_scene_folder(compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json})
     timings["export"] = time.perf_counter() - start
     return CompileReport(
         input=str(input_path),

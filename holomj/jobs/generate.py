@@ -30,6 +30,7 @@ from holomj.jobs.folder import (
     write_scene_folder,
 )
 from holomj.jobs.plan import PlanOptions, check_planner, make_plan
+from holomj.jobs.relation_report import structural_verdicts
 from holomj.jobs.stage_log import Listener, StageLog
 from holomj.layout.house_shell import build_shell
 from holomj.layout.room_furnishing import (
@@ -219,17 +220,22 @@ class _Run:
         self.plan = plan
 
     def retrieve_stage(self) -> None:
+        from holomj.jobs.synthesis import LibrarySynthesiser
         from holomj.retrieval.assets import retriever_for
         from holomj.retrieval.materials import material_picker
         from holomj.retrieval.text import text_encoder
 
         with self.log.stage("retrieve"):
             encoder = text_encoder(self.options.text_model)
+            # Assets the library lacks (a category, a colour, a shape) are made on demand into
+            # it, or into $HOLOMJ_HOME/synthesised when it is read-only; see
+            # holomj.jobs.synthesis.
             self.retriever = retriever_for(
                 self.library,
                 clip_weights=self.options.clip_weights,
                 clip_model=self.options.clip_model,
                 encoder=encoder,
+                synthesiser=LibrarySynthesiser(self.library),
             )
             self.pick_material = material_picker(encoder=encoder, materials=self.options.materials)
             self.assets = {
@@ -329,7 +335,7 @@ class _Run:
             small = drop_small_objects(
                 self.scene, receptacles, self.library, self.retriever, self.seed
             )
-            self.scene = small.scene
+            self.scene = _mark_proxies(small.scene, self.library)
             self.log.info(
                 "small_objects",
                 f"{small.placed}/{small.requested} small object(s) dropped on "
@@ -436,7 +442,22 @@ class _Run:
                 *(c for r in furnished for c in r.changes),
             ],
             "plan_changes": [c for r in furnished for c in r.changes],
+            "relations": [
+                *(v for r in furnished for v in r.relations),
+                *structural_verdicts(self.plan, scene, small.receptacles, self.library),
+            ],
         }
+
+
+def _mark_proxies(scene: SceneSpec, library: AssetLibrary) -> SceneSpec:
+    """``scene`` with ``proxy: true`` on the objects whose asset is a proxy."""
+    objects = [
+        o.model_copy(update={"proxy": True})
+        if o.asset in library and library.get(o.asset).meta.proxy
+        else o
+        for o in scene.objects
+    ]
+    return scene.model_copy(update={"objects": objects})
 
 
 def _missing_defining(room: PlanRoom, done: RoomFurniture) -> list[str]:

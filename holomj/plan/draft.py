@@ -15,6 +15,7 @@ import numpy as np
 from holomj.plan.knowledge import KnowledgeBase, ObjectKind, RoomTemplate
 from holomj.plan.prompt import ParsedPrompt
 from holomj.retrieval.text import TextEncoder
+from holomj.spec.plan import PlanRelation
 
 MAX_QUANTITY = 40  # PlanObject's limit
 
@@ -56,7 +57,10 @@ class DraftObject:
 
     @property
     def footprint(self) -> float:
-        """Floor area of one instance in m² (0 for a kind without a size)."""
+        """Floor area of one instance in m² (0 for a kind without a size, and for a rug: the
+        furniture stands on it)."""
+        if self.kind.category == "rug":
+            return 0.0
         size = self.size or self.kind.size or (0.0, 0.0, 0.0)
         return size[0] * size[1]
 
@@ -75,6 +79,7 @@ class DraftRoom:
     fixed: bool = False
     objects: list[DraftObject] = field(default_factory=list)
     lines: list[str] = field(default_factory=list)
+    relations: list[PlanRelation] = field(default_factory=list)  # from the prompt
     floor: str = ""
     wall: str = ""
     ceiling: str = ""
@@ -101,6 +106,15 @@ class DraftPlan:
     notes: list[str] = field(default_factory=list)
     rooms: list[DraftRoom] = field(default_factory=list)
     only_room: str | None = None  # the one room template the prompt asked for, alone
+    # parsed object request index -> (room id, object name, is a small object)
+    request_homes: dict[int, tuple[str, str, bool]] = field(default_factory=dict)
+    # kinds made for nouns the knowledge base does not know, and the known kind each is like
+    new_kinds: dict[str, ObjectKind] = field(default_factory=dict)
+    like: dict[str, str] = field(default_factory=dict)
+
+    def object_kind(self, name: str) -> ObjectKind:
+        """A known object kind, or one made for a noun the prompt asked for."""
+        return self.new_kinds[name] if name in self.new_kinds else self.kb.objects[name]
 
     def note(self, text: str) -> None:
         """Add a note for the plan (once)."""

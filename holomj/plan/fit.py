@@ -1,6 +1,7 @@
 """Room limits for an offline plan: dropping and shrinking objects until a room's furniture fits.
 
-:func:`fit_room` keeps at most ``max_floor_instances`` floor objects, a floor footprint under
+:func:`fit_room` keeps at most ``max_floor_instances`` floor objects (raised to the number
+asked for, up to :data:`MAX_FLOOR_INSTANCES`), a floor footprint under
 ``footprint_fraction`` of the room (rooms whose size was not given grow for requested objects;
 optional objects and extra requested instances go first, then objects take their smaller
 sizes, then extra essential instances go), no object too big for the room, at most
@@ -35,10 +36,11 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
                 reasons.setdefault(name, []).append(why)
 
     before = _counts(room)
-    while sum(o.quantity for o in floor()) > limits.max_floor_instances:
+    cap = floor_cap(state, room)
+    while sum(o.quantity for o in floor()) > cap:
         if not _shrink(room, floor(), max_tier=4):
             break
-    phase(before, f"at most {limits.max_floor_instances} floor objects per room")
+    phase(before, f"at most {cap} floor objects per room")
     budget = limits.footprint_fraction * room.floor_area
     needed = sum(o.footprint * o.quantity for o in floor() if _tier(o, room) > 0)
     if needed > budget and not room.fixed and any(o.requested for o in floor()):
@@ -61,6 +63,12 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
         f"furniture footprint under {limits.footprint_fraction:.0%} of {room.floor_area:.1f} m²",
     )
     before = _counts(room)
+    hard_budget = limits.single_fraction * room.floor_area
+    while footprint() > hard_budget + 1e-6:  # counts asked for, beyond what a room can hold
+        if not _shrink(room, floor(), max_tier=3):
+            break
+    phase(before, f"furniture footprint under {limits.single_fraction:.0%} of the floor at most")
+    before = _counts(room)
     _drop_misfits(state, room)
     phase(before, "too big for the room")
     if footprint() > budget + 1e-6:
@@ -82,6 +90,16 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
 
 
 ESSENTIAL = 9  # template priority from which an object is essential to its room
+MAX_FLOOR_INSTANCES = 40  # floor objects of one room, however many are asked for
+
+
+def floor_cap(state: DraftPlan, room: DraftRoom) -> int:
+    """How many floor objects the room may keep: the knowledge base's limit, raised to the
+    number asked for (plus the room's defining furniture) up to ``MAX_FLOOR_INSTANCES``."""
+    asked = sum(
+        o.quantity for o in room.objects if o.floor and (o.requested or _tier(o, room) == 4)
+    )
+    return max(state.kb.limits.max_floor_instances, min(asked, MAX_FLOOR_INSTANCES))
 
 
 def _tier(obj: DraftObject, room: DraftRoom) -> int:

@@ -2,8 +2,11 @@
 
 Requested objects go to the room they were asked in, else the roomiest room that has (or would
 have) them; generic words (``chair``) become the kind that room uses; unknown words take the
-nearest known kind; excluded objects (``without a tv``) are removed; small objects go onto the
-room's receptacles, adding one when it has none.
+nearest known kind or stay themselves (:mod:`~holomj.plan.new_kinds`); excluded objects
+(``without a tv``) are removed; small objects go onto the room's receptacles, adding one when it
+has none. Counts: a number as given ("a pair of" is 2, "a few" and "several" 3), "lots of" the
+kind's ``many``, and a plural without a number 2, 3 or 4 by the room's floor area
+(:data:`PLURAL_AREAS_M2`).
 """
 
 from __future__ import annotations
@@ -21,46 +24,61 @@ from holomj.plan.draft import (
 )
 from holomj.plan.furnish import draw_on_top
 from holomj.plan.knowledge import ObjectKind
+from holomj.plan.new_kinds import resolve_unknown
 from holomj.plan.prompt import ObjectRequest
-from holomj.plan.scene_match import OBJECT_MATCH_MIN, nearest_object
 
 
 def apply_requests(state: DraftPlan) -> None:
     """The prompt's objects: merged into rooms, excluded ones removed, unknown ones matched."""
-    parsed, kb = state.parsed, state.kb
+    parsed = state.parsed
     requests = list(parsed.objects)
     for phrase in parsed.unknown:
-        kind, sim = nearest_object(state, phrase)
-        if kind is None:
-            state.note(
-                f"'{phrase}' is not an object the knowledge base knows (nearest match "
-                f"{sim:.2f} < {OBJECT_MATCH_MIN}); left out"
-            )
-            continue
-        state.note(f"'{phrase}' is not in the knowledge base; planned the closest kind, '{kind}'")
-        requests.append(ObjectRequest(kind=kind, quantity=1, phrase=phrase))
+        kind = resolve_unknown(state, phrase)
+        if kind is not None:
+            requests.append(ObjectRequest(kind=kind, quantity=1, phrase=phrase))
     for refused in parsed.refused:
         state.note(f"'{refused.phrase}': {refused.reason}")
-    for request in requests:
+    for index, request in enumerate(requests):
         if request.excluded or request.quantity == 0:
             _exclude(state, request)
             continue
+        reference = _reference(state, request) if request.definite else None
+        if reference is not None:  # "the bed" after "a queen bed": the same bed
+            state.request_homes[index] = reference
+            continue
         room = _request_room(state, request)
         name = _resolve_kind(state, request, room)
-        kind = kb.objects[name]
-        quantity = _quantity(request, kind)
+        kind = state.object_kind(name)
+        quantity = _quantity(request, kind, room)
         if kind.placement == "object":
             _add_small(state, room, name, kind, quantity)
         else:
             _add_object(state, room, name, kind, quantity, request)
+        state.request_homes[index] = (room.id, name, kind.placement == "object")
 
 
-def _quantity(request: ObjectRequest, kind: ObjectKind) -> int:
+def _reference(state: DraftPlan, request: ObjectRequest) -> tuple[str, str, bool] | None:
+    """The object an earlier request of the same kind put in a room, for ``the <kind>``."""
+    kinds = state.kb.generics[request.kind].kinds if request.generic else [request.kind]
+    for room_id, name, small in state.request_homes.values():
+        if name in kinds:
+            return room_id, name, small
+    return None
+
+
+# A plural without a number ("bookshelves", "some chairs"): 2 in a room under the first area,
+# 3 under the second, else 4.
+PLURAL_AREAS_M2 = (15.0, 30.0)
+
+
+def _quantity(request: ObjectRequest, kind: ObjectKind, room: DraftRoom) -> int:
     if request.quantity is not None:
         return request.quantity
     if request.many:
         return kind.many
-    return 2 if request.plural else 1
+    if not request.plural:
+        return 1
+    return 2 + sum(room.floor_area >= a for a in PLURAL_AREAS_M2)
 
 
 def _request_room(state: DraftPlan, request: ObjectRequest) -> DraftRoom:
@@ -148,9 +166,7 @@ def _add_object(
     obj.asked = request.phrase
 
 
-def _replace_same_category(
-    state: DraftPlan, room: DraftRoom, name: str, kind: ObjectKind
-) -> None:
+def _replace_same_category(state: DraftPlan, room: DraftRoom, name: str, kind: ObjectKind) -> None:
     """A requested kind takes the place of the template's object of the same category (a
     twin bed asked for is the room's bed, not a second one)."""
     for other in list(room.objects):
@@ -167,15 +183,17 @@ def _add_small(
     """Put requested small objects on the room's receptacles (adding one when it has none)."""
     kb = state.kb
     cap = kb.limits.max_small_per_receptacle
+    # a kind made for an unknown noun goes where the known kind it is like goes
+    like = kb.objects[state.like[name]].category if name in state.like else kind.category
 
     def weight(obj: DraftObject) -> float:
-        return dict(kb.small_choices(room.template.type, obj.kind.category)).get(kind.category, 0)
+        return dict(kb.small_choices(room.template.type, obj.kind.category)).get(like, 0)
 
     holders = sorted(
         (o for o in room.objects if o.floor and weight(o) > 0), key=lambda o: -weight(o)
     )
     if not holders:
-        holder_kind = _receptacle_for(state, room, kind.category)
+        holder_kind = _receptacle_for(state, room, like)
         if holder_kind is None:
             state.note(
                 f"no receptacle in the knowledge base holds {plural_name(name, 2)}; left out"

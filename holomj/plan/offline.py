@@ -22,7 +22,9 @@ same prompt and seed give the same plan:
    small objects; optional, low-priority objects go first, requested ones last. Every drop is
    noted.
 6. **Constraints**: the templates' lines (or each kind's defaults) written per instance, with
-   targets spread over the target's instances and lines to absent objects left out.
+   targets spread over the target's instances and lines to absent objects left out; and the
+   prompt's relations (``a desk under the window``), made plan relations after step 4
+   (:mod:`~holomj.plan.relations`), which the layout weighs above the defaults.
 
 Modules: :mod:`~holomj.plan.scene_match` (step 1), :mod:`~holomj.plan.rooms` (2, 3),
 :mod:`~holomj.plan.furnish` and :mod:`~holomj.plan.object_requests` (4), :mod:`~holomj.plan.fit`
@@ -43,6 +45,7 @@ from holomj.plan.furnish import apply_capacity, apply_windows, furnish
 from holomj.plan.knowledge import knowledge_base
 from holomj.plan.object_requests import apply_requests
 from holomj.plan.prompt import parse_prompt
+from holomj.plan.relations import apply_relations, room_relations
 from holomj.plan.rooms import (
     WALL_HEIGHT_LIMITS,
     choose_wall_height,
@@ -84,6 +87,7 @@ def plan_offline(prompt: str, seed: int, *, encoder: TextEncoder | None = None) 
         furnish(state, room)
     apply_capacity(state)
     apply_requests(state)
+    apply_relations(state)
     apply_windows(state)
     for room in state.rooms:
         fit_room(state, room)
@@ -125,9 +129,7 @@ def _plan_room(state: DraftPlan, room: DraftRoom, styles: list[str]) -> PlanRoom
     defining = set(room.template.defining)
     categories = {state.kb.objects[n].category for n in defining if n in state.kb.objects}
     objects = [
-        _plan_object(
-            state, obj, styles, obj.name in defining or obj.kind.category in categories
-        )
+        _plan_object(state, obj, styles, obj.name in defining or obj.kind.category in categories)
         for obj in room.objects
     ]
     return PlanRoom(
@@ -142,6 +144,7 @@ def _plan_room(state: DraftPlan, room: DraftRoom, styles: list[str]) -> PlanRoom
         windows=PlanWindows(count=room.windows),
         objects=objects,
         constraints=constraint_lines(room),
+        relations=room_relations(state, room),
     )
 
 
@@ -165,7 +168,7 @@ def _plan_object(
         on_top=[
             PlanSmallObject(
                 name=s.name,
-                description=state.kb.objects[s.name].description,
+                description=state.object_kind(s.name).description,
                 category=s.category,
                 quantity=s.quantity,
                 variance=s.variance,  # type: ignore[arg-type]

@@ -45,6 +45,7 @@ from holomj.plan.prompt_clauses import (
 from holomj.plan.prompt_index import PhraseIndex, phrase_index
 from holomj.plan.prompt_materials import lone_materials, read_materials
 from holomj.plan.prompt_reader import Mention, Reader, match_phrases, read_modifiers
+from holomj.plan.prompt_relations import RelationRequest, read_relations
 from holomj.plan.prompt_sizes import read_sizes
 from holomj.plan.prompt_words import (
     HEAD_END,
@@ -73,6 +74,9 @@ class ObjectRequest(FrozenModel):
     adjectives: list[str] = Field(default_factory=list)
     room: str | None = Field(default=None, description="Template of the room it was asked in.")
     excluded: bool = False
+    definite: bool = Field(
+        default=False, description="Named with 'the' and no number: maybe a reference."
+    )
     phrase: str
 
 
@@ -114,6 +118,9 @@ class ParsedPrompt(FrozenModel):
     styles: list[str] = Field(default_factory=list)
     materials: dict[str, str] = Field(default_factory=dict)
     objects: list[ObjectRequest] = Field(default_factory=list)
+    relations: list[RelationRequest] = Field(
+        default_factory=list, description="Where the prompt puts its objects."
+    )
     refused: list[RefusedRequest] = Field(default_factory=list)
     unknown: list[str] = Field(default_factory=list)
     capacity: int | None = None
@@ -150,6 +157,11 @@ def parse_prompt(text: str, kb: KnowledgeBase) -> ParsedPrompt:
         styles=found.styles,
         materials=materials,
         objects=found.objects,
+        relations=read_relations(
+            reader.words,
+            found.spans,
+            [(m.start, m.end) for m in reader.mentions if m.meaning("room") or m.meaning("scene")],
+        ),
         refused=found.refused,
         unknown=unknown_phrases(reader, with_scopes(reader.words)),
         capacity=read_capacity(reader.words),
@@ -164,6 +176,7 @@ class _Found:
 
     rooms: list[RoomMention] = field(default_factory=list)
     objects: list[ObjectRequest] = field(default_factory=list)
+    spans: list[tuple[int, int]] = field(default_factory=list)  # words of each object
     refused: list[RefusedRequest] = field(default_factory=list)
     styles: list[str] = field(default_factory=list)
     windows: int | None = None
@@ -216,9 +229,11 @@ def _read_mentions(
                     adjectives=mods.adjectives,
                     room=context,
                     excluded=excluded,
+                    definite=not mods.counted and reader.words[mods.start] == "the",
                     phrase=phrase,
                 )
             )
+            found.spans.append((mention.start, mention.end))
         elif refusal is not None and not excluded:
             reason = reader.kb.refused[refusal.key].reason
             found.refused.append(RefusedRequest(name=refusal.key, phrase=phrase, reason=reason))

@@ -126,6 +126,8 @@ def unknown_phrases(reader: Reader, scopes: list[tuple[int, int]]) -> list[str]:
 def _unknown_item(reader: Reader, item: list[int], covered: list[bool]) -> str | None:
     if not item or any(covered[k] or reader.used[k] for k in item):
         return None
+    if any(reader.words[k] == NEG for k in item):
+        return None  # "no car": nothing to plan
     content = [k for k in item if _is_content(reader, reader.words[k])]
     if not content:
         return None

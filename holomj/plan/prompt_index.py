@@ -52,9 +52,11 @@ def _build_index(kb: KnowledgeBase) -> PhraseIndex:
     derived: dict[tuple[str, ...], list[Meaning]] = {}
 
     def add(phrases: Sequence[str], kind: str, key: str, plurals: bool) -> None:
+        # an alias that is the plural of another (``bookshelves``) is read as a plural
+        forms = {tuple(tokenize(f)) for p in phrases for f in plural_forms(p)} if plurals else set()
         for phrase in phrases:
             words = tuple(tokenize(phrase))
-            _add_meaning(explicit, words, Meaning(kind, key))
+            _add_meaning(explicit, words, Meaning(kind, key, plural=words in forms))
             if plurals:
                 for form in plural_forms(phrase):
                     _add_meaning(derived, tuple(tokenize(form)), Meaning(kind, key, plural=True))

@@ -30,6 +30,8 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
         counts = {e.id: int(e.template == state.only_room) for e in scene.rooms}
         first = [e.id for e in scene.rooms if counts[e.id]]
         counts = {k: int(k == first[0]) for k in counts} if first else counts
+    if scene.kind == "commercial" and state.only_room is None:
+        _main_room_alone(state, scene, counts)
     single = len(scene.rooms) == 1 or state.only_room is not None
     # A prompt that lists its rooms ("a house with a kitchen, a dining room, a living room and
     # a bedroom") gets those rooms: each listed room once unless counted, the others of the
@@ -74,6 +76,25 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
         counts[first.id] = 1
         state.note(f"no room was left; planned one {kb.rooms[first.template].name}")
     _build_rooms(state, scene, counts, extra)
+
+
+def _main_room_alone(state: DraftPlan, scene: SceneType, counts: dict[str, int]) -> None:
+    """A commercial scene (a hotel room, a restaurant) is its main room: the rooms that serve it
+    (an en-suite bathroom, a kitchen) are planned only when the prompt names them."""
+    kb = state.kb
+    named = {m.template for m in state.parsed.rooms if not m.excluded}
+    dropped = []
+    for entry in scene.rooms:
+        template = kb.rooms[entry.template]
+        if entry.id == scene.entrance or entry.template in named or template.counts_as in named:
+            continue
+        if counts.get(entry.id):
+            dropped.append(template.name)
+        counts[entry.id] = 0
+    if dropped:
+        state.note(
+            f"planned the {scene.name} as its main room; no {', no '.join(dropped)} (not asked for)"
+        )
 
 
 def _cap_rooms(state: DraftPlan, counts: dict[str, int], extra: dict[str, int]) -> None:

@@ -94,6 +94,12 @@ def _nearest_scene(state: DraftPlan) -> tuple[str, str]:
 
 def nearest_object(state: DraftPlan, phrase: str) -> tuple[str | None, float]:
     """The object kind nearest to an unknown phrase, if similar enough."""
+    (name, sim), *_ = nearest_objects(state, phrase, 1)
+    return (name if sim >= OBJECT_MATCH_MIN else None), sim
+
+
+def nearest_objects(state: DraftPlan, phrase: str, count: int) -> list[tuple[str, float]]:
+    """The ``count`` object kinds nearest to a phrase by text embedding, nearest first."""
     kb = state.kb
     encoder = state.text_encoder()
     key = (id(encoder), id(kb))
@@ -107,7 +113,5 @@ def nearest_object(state: DraftPlan, phrase: str) -> tuple[str | None, float]:
         cached = (encoder, kb, names, np.asarray(encoder.encode(texts), dtype=np.float32))
         _OBJECT_VECTORS[key] = cached
     sims = cached[3] @ np.asarray(encoder.encode([phrase]), dtype=np.float32)[0]
-    best = int(np.argmax(sims))
-    if float(sims[best]) < OBJECT_MATCH_MIN:
-        return None, float(sims[best])
-    return cached[2][best], float(sims[best])
+    order = np.argsort(-sims, kind="stable")[:count]
+    return [(cached[2][int(i)], float(sims[int(i)])) for i in order]

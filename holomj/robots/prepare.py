@@ -104,9 +104,7 @@ def prepare_robot(source: RobotSource) -> PreparedRobot:
     return PreparedRobot(source, spec, files, home, footprint_of(model), notes)
 
 
-def _compile(
-    spec: mujoco.MjSpec, files: dict[str, bytes], source: RobotSource
-) -> mujoco.MjModel:
+def _compile(spec: mujoco.MjSpec, files: dict[str, bytes], source: RobotSource) -> mujoco.MjModel:
     try:
         return compile_spec(spec, files)
     except ValueError as err:

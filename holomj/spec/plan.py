@@ -91,6 +91,46 @@ class PlanWindows(FrozenModel):
     kind: Literal["fixed", "hung", "slider"] | None = None
 
 
+PlanRelationKind = Literal[
+    "corner",
+    "wall",
+    "middle",
+    "under_window",
+    "by_window",
+    "by_door",
+    "facing_window",
+    "facing_door",
+    "adjacent_to",
+    "near",
+    "in_front_of",
+    "behind",
+    "facing",
+    "across_from",
+    "around",
+    "both_sides",
+    "in_row",
+    "on",
+    "above",
+    "ceiling",
+]
+
+
+class PlanRelation(FrozenModel):
+    """Where the request puts an object: ``subject`` (a plan object, all its instances) in
+    relation ``kind`` to ``target`` (another plan object of the room) or to a place (no target:
+    corner, wall, middle, under / by a window, by a door, hanging from the ceiling).
+
+    Layout relations become weighted layout constraints per instance; ``on`` (small objects on
+    a receptacle), ``above`` (a wall object over a floor object) and ``ceiling`` are kept by the
+    plan's structure. ``generate.json`` reports whether each one holds.
+    """
+
+    subject: ObjectName
+    kind: PlanRelationKind
+    target: ObjectName | None = None
+    phrase: str = Field(default="", max_length=300, description="The request's words for it.")
+
+
 class PlanRoom(FrozenModel):
     """One room of the plan."""
 
@@ -112,6 +152,11 @@ class PlanRoom(FrozenModel):
         description="Layout constraints, text form over instance names: "
         "'coffee table-0 | near, sofa-0'.",
     )
+    relations: list[PlanRelation] = Field(
+        default_factory=list,
+        max_length=200,
+        description="Where the request puts the room's objects (weighted above the defaults).",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> PlanRoom:
@@ -127,6 +172,12 @@ class PlanRoom(FrozenModel):
                 raise ValueError(f"{obj.name!r} hangs above {obj.above!r}, not a floor object here")
         if self.id in self.adjacent_to:
             raise ValueError("a room cannot be adjacent to itself")
+        small = {s.name for o in self.objects for s in o.on_top}
+        for rel in self.relations:
+            known = set(names) | (small if rel.kind == "on" else set())
+            for name in (rel.subject, rel.target):
+                if name is not None and name not in known:
+                    raise ValueError(f"relation {rel.kind!r} names {name!r}, not an object here")
         return self
 
     @property

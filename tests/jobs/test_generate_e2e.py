@@ -12,6 +12,7 @@ import pytest
 from holomj.jobs.generate import GenerateOptions, generate_scene
 from holomj.jobs.validate import validate
 from holomj.layout.room_furnishing import FIXED_CATEGORIES, object_id
+from holomj.library.store import AssetLibrary
 
 PROMPTS = [
     "a small kitchen",
@@ -53,8 +54,9 @@ def test_generate_gives_a_valid_stable_scene_with_the_requested_objects(
     assert set(report["static_objects"]) == {k for k, o in scene.items() if o["static"]} | {
         o["name"] for o in report["objects"] if not o["dynamic"]
     }
+    library = AssetLibrary.open(default_library.root)  # with the assets made on demand
     for name in report["static_objects"]:
-        asset = default_library.get(scene[name]["asset"]).meta
+        asset = library.get(scene[name]["asset"]).meta
         assert asset.category in FIXED_CATEGORIES or set(asset.placement) <= {"wall", "ceiling"}
     # And 'holomj validate' with every piece of furniture free agrees.
     free = validate(out, furniture="free", sleep=True)

@@ -77,8 +77,14 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.robots": (
         "robot registry, preparation, floor spot, attaching (in memory)",
-        ("holomj.errors", "holomj.seeds", "holomj.spec", "holomj.library", "holomj.mjcf",
-         "holomj.physics"),
+        (
+            "holomj.errors",
+            "holomj.seeds",
+            "holomj.spec",
+            "holomj.library",
+            "holomj.mjcf",
+            "holomj.physics",
+        ),
     ),
     "holomj.rendering": (
         "headless rendering, plan view, HTML report (in memory)",
@@ -86,8 +92,14 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.export": (
         "output formats in memory: objects.json, navigation map, summaries",
-        ("holomj.errors", "holomj.spec", "holomj.library", "holomj.mjcf", "holomj.physics",
-         "holomj.robots"),
+        (
+            "holomj.errors",
+            "holomj.spec",
+            "holomj.library",
+            "holomj.mjcf",
+            "holomj.physics",
+            "holomj.robots",
+        ),
     ),
     "holomj.jobs": (
         "one module per user-facing job; the output folder (file names, atomic I/O)",

@@ -85,7 +85,7 @@ def compile_scene(
     add_openings(ctx, openings)
     objects = ObjectBuilder(ctx, library, furniture)
     objects.add_all()
-    add_lights(ctx)
+    add_lights(ctx, fixtures=[obj.position for obj, _ in objects.fixtures])
     add_cameras(ctx)
     if profile == "mjx":
         from holomj.mjcf.mjx_profile import apply_mjx_profile

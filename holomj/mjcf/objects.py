@@ -23,7 +23,7 @@ from holomj.mjcf import names
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean, yaw_quat
 from holomj.spec.assets import AssetMeta, CollisionPart
-from holomj.spec.decor import DECOR_CATEGORIES, DECOR_GROUP
+from holomj.spec.decor import DECOR_CATEGORIES, DECOR_GROUP, LIGHT_FIXTURE_CATEGORIES
 from holomj.spec.scene import SceneObject
 
 _PRIMITIVES = {
@@ -73,6 +73,8 @@ class ObjectBuilder:
         self.used: dict[str, LibraryAsset] = {}
         self._handles: dict[tuple[str, tuple[float, float, float]], _AssetHandles] = {}
         self._materials: dict[str, list[str]] = {}
+        # (object, asset) of every light fixture added: they carry their room's light
+        self.fixtures: list[tuple[SceneObject, AssetMeta]] = []
 
     def add_all(self) -> None:
         """Add every object of the scene."""
@@ -87,6 +89,8 @@ class ObjectBuilder:
         """Add one object as a body (with a free joint unless it is static)."""
         meta = asset.meta
         self.used[meta.id] = asset
+        if meta.category in LIGHT_FIXTURE_CATEGORIES:
+            self.fixtures.append((obj, meta))
         scale = obj.scale3
         handles = self._asset_handles(asset, scale)
         static = is_static(obj, meta, self.furniture)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import mujoco
 import numpy as np
@@ -11,6 +12,7 @@ from shapely.geometry import Point, Polygon
 from holomj.mjcf import names
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean, look_at_quat
+from holomj.spec.decor import LIGHT_BELOW_FIXTURE_M
 
 _LIGHT_TYPES = {
     "point": mujoco.mjtLightType.mjLIGHT_POINT,
@@ -21,8 +23,10 @@ EYE_HEIGHT = 1.6
 ROOM_CAMERA_FOVY = 75.0
 
 
-def add_lights(ctx: BuildContext) -> None:
-    """The scene's lights, or a sun plus one ceiling light per room when it has none."""
+def add_lights(ctx: BuildContext, fixtures: Sequence[Sequence[float]] = ()) -> None:
+    """The scene's lights, or a sun plus the rooms' ceiling lights when it has none: a point
+    light under every light fixture of a room (``fixtures``: their base positions; a fixture's
+    base is its lowest point), else one at the room's centre under the ceiling."""
     scene = ctx.scene
     if scene.lights:
         for light in scene.lights:
@@ -53,15 +57,30 @@ def add_lights(ctx: BuildContext) -> None:
         castshadow=True,
     )
     for room in scene.rooms:
-        c = Polygon(room.polygon).centroid
-        ctx.spec.worldbody.add_light(
-            name=names.light(f"room/{room.id}"),
-            type=mujoco.mjtLightType.mjLIGHT_POINT,
-            pos=clean([c.x, c.y, scene.wall_height - 0.3]),
-            diffuse=[0.25, 0.25, 0.25],
-            specular=[0.05, 0.05, 0.05],
-            castshadow=False,
-        )
+        polygon = Polygon(room.polygon)
+        c = polygon.centroid
+        inside = [f for f in fixtures if polygon.contains(Point(f[0], f[1]))]
+        if not inside:
+            ctx.spec.worldbody.add_light(
+                name=names.light(f"room/{room.id}"),
+                type=mujoco.mjtLightType.mjLIGHT_POINT,
+                pos=clean([c.x, c.y, scene.wall_height - 0.3]),
+                diffuse=[0.25, 0.25, 0.25],
+                specular=[0.05, 0.05, 0.05],
+                castshadow=False,
+            )
+            continue
+        share = 0.25 / len(inside) ** 0.5  # more fixtures, each a little dimmer
+        for k, (x, y, z) in enumerate(inside):
+            added = ctx.spec.worldbody.add_light(
+                name=names.light(f"room/{room.id}/fixture{k}"),
+                type=mujoco.mjtLightType.mjLIGHT_POINT,
+                pos=clean([x, y, max(z - LIGHT_BELOW_FIXTURE_M, 0.5)]),
+                diffuse=[share, share, share],
+                specular=[0.05, 0.05, 0.05],
+                castshadow=False,
+            )
+            added.info = f"light of the fixture at ({x:.2f}, {y:.2f}) in {room.id}"
 
 
 def add_cameras(ctx: BuildContext) -> None:

@@ -10,6 +10,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 import pytest
+from shapely.geometry import Point, Polygon
 
 from holomj.errors import AssetNotFoundError
 from holomj.library import AssetLibrary
@@ -210,3 +211,25 @@ def test_texture_material(tmp_path: Path, empty_library: AssetLibrary, shared_as
     assert compiled.model.ntex == 1
     assert compiled.files["textures/planks.png"] == texture.read_bytes()
     assert simulate(compiled.model, 0.2).ok
+
+
+def test_light_fixtures_carry_their_rooms_light(default_library: AssetLibrary) -> None:
+    """A room with a ceiling fixture is lit from under it; a room without one from its centre."""
+    data = two_room_data()
+    data["lights"] = []
+    pendant = default_library.by_category("pendant_light")[0].meta
+    height = data.get("wall_height", 2.7)
+    z = round(height - pendant.size[2], 4)
+    data["objects"] = [
+        {"id": "lamp", "asset": pendant.id, "position": [1.0, 1.0, z], "static": True}
+    ]
+    scene = SceneSpec.model_validate(data)
+    model = compile_scene(scene, default_library).model
+    lights = {model.light(i).name: model.light_pos[i] for i in range(model.nlight)}
+    room = next(r.id for r in scene.rooms if Polygon(r.polygon).contains(Point(1.0, 1.0)))
+    fixture = lights[f"light/room/{room}/fixture0"]
+    assert fixture[0] == pytest.approx(1.0) and fixture[1] == pytest.approx(1.0)
+    assert fixture[2] < z  # under the fixture's lowest point
+    assert f"light/room/{room}" not in lights
+    others = [r.id for r in scene.rooms if r.id != room]
+    assert all(f"light/room/{r}" in lights for r in others)

@@ -21,31 +21,11 @@ from typing import Literal
 from pydantic import Field
 
 from holomj.spec.base import FrozenModel
+from holomj.spec.plan import PlanRelationKind
 
-RelationKind = Literal[
-    "corner",
-    "wall",
-    "middle",
-    "under_window",
-    "by_window",
-    "facing_window",
-    "by_door",
-    "facing_door",
-    "ceiling",
-    "adjacent_to",
-    "near",
-    "in_front_of",
-    "behind",
-    "facing",
-    "across_from",
-    "around",
-    "both_sides",
-    "on",
-    "above",
-    "under",
-    "holds",
-    "in_row",
-]
+# The plan's relation kinds, and what only the prompt reader uses: an object under another,
+# "X with Y" (the planner decides what it means), facing a wall object.
+RelationKind = Literal[PlanRelationKind, "under", "holds"]
 TargetKind = Literal["object", "place"]
 
 # Words between an object phrase and its relation phrase that say nothing about where.

@@ -139,6 +139,15 @@ def category_synonyms() -> dict[str, tuple[str, ...]]:
     return {k: tuple(v) for k, v in out.items()}
 
 
+def _check_placement(placement: str, description: str) -> None:
+    if placement not in PLACEMENTS:
+        raise InputError(
+            f"unknown placement {placement!r}",
+            where=description,
+            fix=f"use one of: {', '.join(PLACEMENTS)}",
+        )
+
+
 def size_discrepancy(
     requested: tuple[float, float, float], asset_size: tuple[float, float, float]
 ) -> float:
@@ -344,12 +353,7 @@ class AssetRetriever:
         self, description: str, placement: str, category: str | None
     ) -> list[LibraryAsset]:
         """The library's own assets (none made on demand) of ``category`` or its aliases."""
-        if placement not in PLACEMENTS:
-            raise InputError(
-                f"unknown placement {placement!r}",
-                where=description,
-                fix=f"use one of: {', '.join(PLACEMENTS)}",
-            )
+        _check_placement(placement, description)
         placed = self._placed(placement)
         if category is None:
             return placed
@@ -469,12 +473,7 @@ class AssetRetriever:
     def _candidates(
         self, description: str, placement: str, category: str | None
     ) -> list[LibraryAsset]:
-        if placement not in PLACEMENTS:
-            raise InputError(
-                f"unknown placement {placement!r}",
-                where=description,
-                fix=f"use one of: {', '.join(PLACEMENTS)}",
-            )
+        _check_placement(placement, description)
         placed = [a for a in self._assets if placement in a.meta.placement]
         if not placed:
             raise InputError(

@@ -23,6 +23,9 @@ from shapely.geometry.polygon import orient
 FRONT: tuple[tuple[int, int], ...] = ((1, 0), (0, 1), (-1, 0), (0, -1))
 EPS = 1e-6
 ADJACENT_GAP_M = 0.45  # 'adjacent to': footprints at most this far apart
+# How far a furnished room's layout polygon lies inside its wall surfaces (beyond half the wall
+# thickness): furniture laid out against it never touches a wall.
+LAYOUT_MARGIN_M = 0.03
 
 
 def yaw_index(yaw_deg: float) -> int:

@@ -1,12 +1,13 @@
 """Free floor a robot cannot reach: measured on a layout, and reduced by nudging furniture.
 
-A robot of radius :data:`ROBOT_RADIUS_M` stands where its disc fits between the walls and the
-footprints (a raster of :data:`CELL_M` cells). The *reachable share* is the part of those cells
-connected to a door's keep-out zone. Furniture clusters can cut off pockets (the corner behind
+A robot stands where its disc fits between the walls and the footprints (a raster of
+:data:`CELL_M` cells). The *reachable share* is the part of that free floor a robot reaches from a
+door's keep-out zone, with a margin both ways (:data:`FREE_RADIUS_M`, :data:`PASSAGE_RADIUS_M`
+around :data:`ROBOT_RADIUS_M`). Furniture clusters can cut off pockets (the corner behind
 an armchair and a side table); :func:`open_pockets` moves the furniture around a pocket, a grid
 step at a time up to :data:`MAX_SHIFT_M`, keeping a move only when every hard rule still holds,
 no satisfied constraint is lost and the reachable share grows, until the share reaches
-:data:`TARGET_SHARE` or no move helps.
+:data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were tried.
 """
 
 from __future__ import annotations
@@ -21,11 +22,17 @@ from holomj.layout import geometry as geo
 from holomj.layout.room_problem import PreparedRoom
 
 Pose = tuple[int, int, int]
-ROBOT_RADIUS_M = 0.22  # a 0.2 m robot and a little slack for the walls' rasterisation
+ROBOT_RADIUS_M = 0.2
+# Free floor is where a slightly smaller robot fits (what another measure may count as free); it
+# is reached only through passages a slightly larger one fits through, so that a move counts
+# only when it opens a passage with room to spare or closes the pocket.
+FREE_RADIUS_M = 0.17
+PASSAGE_RADIUS_M = 0.25
 CELL_M = 0.05
 TARGET_SHARE = 0.985
-MAX_SHIFT_M = 0.4
+MAX_SHIFT_M = 0.8
 MAX_ROUNDS = 8
+MAX_TRIALS = 600  # poses tried in all, so that a crowded room stays fast
 
 
 class ReachMeter:
@@ -33,19 +40,24 @@ class ReachMeter:
 
     def __init__(self, prep: PreparedRoom) -> None:
         self.raster = geo.Raster.around(prep.room, CELL_M)
-        self.base = geo.free_walk_mask(prep.room, [], self.raster, ROBOT_RADIUS_M)
+        self.base_free = geo.free_walk_mask(prep.room, [], self.raster, FREE_RADIUS_M)
+        self.base_pass = geo.free_walk_mask(prep.room, [], self.raster, PASSAGE_RADIUS_M)
         xs, ys = self.raster.centres()
         self.xs, self.ys = xs, ys
-        seeds = np.zeros(self.base.shape, dtype=bool)
+        seeds = np.zeros(self.base_free.shape, dtype=bool)
         for zone in prep.door_zones:
             seeds |= np.asarray(shapely.contains_xy(zone, xs, ys), dtype=bool)
         self.seeds = seeds
-        self.applicable = bool((seeds & self.base).any())
+        self.applicable = bool((seeds & self.base_pass).any())
+        steps = int(np.ceil((PASSAGE_RADIUS_M - FREE_RADIUS_M) / CELL_M)) + 1
+        self.sweep = ndimage.generate_binary_structure(2, 2)
+        self.sweep_steps = steps
 
-    def free(self, rects: Sequence[Sequence[float]]) -> np.ndarray:
-        """Cells where the robot's centre fits beside these footprints."""
-        free = self.base.copy()
-        r2 = ROBOT_RADIUS_M * ROBOT_RADIUS_M
+    def _clear(
+        self, base: np.ndarray, radius: float, rects: Sequence[Sequence[float]]
+    ) -> np.ndarray:
+        free = base.copy()
+        r2 = radius * radius
         for xmin, ymin, xmax, ymax in rects:
             dx = np.maximum(np.maximum(xmin - self.xs, self.xs - xmax), 0.0)
             dy = np.maximum(np.maximum(ymin - self.ys, self.ys - ymax), 0.0)
@@ -54,13 +66,17 @@ class ReachMeter:
 
     def pockets(self, rects: Sequence[Sequence[float]]) -> tuple[float, np.ndarray]:
         """The reachable share and the mask of free cells not reachable from a door."""
-        free = self.free(rects)
+        free = self._clear(self.base_free, FREE_RADIUS_M, rects)
+        passable = self._clear(self.base_pass, PASSAGE_RADIUS_M, rects)
         total = int(free.sum())
         if total == 0 or not self.applicable:
             return 1.0, np.zeros_like(free)
-        labels, _ = ndimage.label(free)
-        reached = set(np.unique(labels[free & self.seeds]).tolist()) - {0}
-        reach = np.isin(labels, list(reached)) & free
+        labels, _ = ndimage.label(passable)
+        reached = set(np.unique(labels[passable & self.seeds]).tolist()) - {0}
+        core = np.isin(labels, list(reached)) & passable
+        # what the larger robot reaches, grown by the difference of the radii: the floor the
+        # smaller one covers from there
+        reach = ndimage.binary_dilation(core, self.sweep, iterations=self.sweep_steps) & free
         return float(reach.sum()) / total, free & ~reach
 
 
@@ -84,12 +100,16 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     poses = dict(poses)
     weight = satisfied_weight(prep, _metres(poses, g))
     steps = max(1, round(MAX_SHIFT_M / g))
+    trials = 0
     for _ in range(MAX_ROUNDS):
         best: tuple[float, dict[int, Pose]] | None = None
         for i in _bordering(prep, poses, pocket, meter):
             x, y, k = poses[i]
             for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)):
                 for n in range(1, steps + 1):
+                    trials += 1
+                    if trials > MAX_TRIALS:
+                        break
                     trial = {**poses, i: (x + dx * n, y + dy * n, k)}
                     checks, _ = hard_checks(prep, trial)
                     if not checks.ok:
@@ -116,7 +136,7 @@ def _bordering(
     if not pocket.any():
         return []
     px, py = meter.xs[pocket], meter.ys[pocket]
-    reach = ROBOT_RADIUS_M + 2 * CELL_M
+    reach = PASSAGE_RADIUS_M + 2 * CELL_M
     out = []
     g = prep.grid
     for i, (x, y, k) in poses.items():

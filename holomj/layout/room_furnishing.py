@@ -25,6 +25,7 @@ from shapely import affinity
 from shapely.geometry import Point, Polygon, box
 
 from holomj.errors import HolomjError
+from holomj.layout.geometry import LAYOUT_MARGIN_M
 from holomj.layout.relation_constraints import relation_constraints, relation_verdicts
 from holomj.layout.room_problem import (
     LayoutDoor,
@@ -50,7 +51,6 @@ from holomj.spec.plan import PlanObject, PlanRoom, instance_name
 from holomj.spec.scene import Door, Room, SceneObject, Window
 from holomj.spec.walls import Wall
 
-LAYOUT_MARGIN_M = 0.03  # beyond half the interior wall thickness
 DEFINING_PRIORITY = 100  # a room's defining furniture outweighs every optional object
 REQUESTED_PRIORITY = 10
 # The layout keeps a walkway this wide (radius) between every two doors of a room: 5 cm more than

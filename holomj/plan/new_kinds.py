@@ -27,6 +27,7 @@ import numpy as np
 
 from holomj.plan.draft import DraftPlan
 from holomj.plan.knowledge import ObjectKind
+from holomj.plan.prompt_relations import RELATIONS
 from holomj.plan.scene_match import OBJECT_MATCH_MIN, nearest_objects
 
 SAME_KIND_MIN = 0.75  # an unknown phrase this similar to a known kind is that kind
@@ -56,6 +57,9 @@ SIZE_BOUNDS: dict[str, tuple[tuple[float, float, float], tuple[float, float, flo
 # Last words of phrases that name a surface finish, not an object ("white tiles").
 SURFACE_WORDS = frozenset(
     {"tiles", "tile", "tiling", "wallpaper", "paint", "parquet", "plaster", "bricks", "brick"}
+)
+_RELATION_WORDS = frozenset(
+    {first for words in RELATIONS for first in words[:1]} - {"face", "faces"}
 )
 _PLACEMENT_WORDS = {
     "floor": "a floor object",
@@ -114,7 +118,12 @@ def kind_name(phrase: str) -> str | None:
     """An object name for a phrase: lower-case words of letters and digits, no article."""
     words = re.sub(r"[^a-z0-9 ]+", " ", phrase.lower()).strip()
     words = _ARTICLES.sub("", words)
-    name = " ".join(words.split()[:6])[:64].strip()
+    kept = []
+    for word in words.split():  # "a bicycle against the wall": the thing is the bicycle
+        if word in _RELATION_WORDS:
+            break
+        kept.append(word)
+    name = " ".join(kept[:6])[:64].strip()
     return name or None
 
 

@@ -189,6 +189,8 @@ def _add_small(
     def weight(obj: DraftObject) -> float:
         return dict(kb.small_choices(room.template.type, obj.kind.category)).get(like, 0)
 
+    for obj in room.objects:  # what is asked for replaces the template's own
+        obj.on_top = [s for s in obj.on_top if s.requested or s.name != name]
     holders = sorted(
         (o for o in room.objects if o.floor and weight(o) > 0), key=lambda o: -weight(o)
     )

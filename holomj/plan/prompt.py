@@ -222,7 +222,7 @@ def _read_mentions(
                 ObjectRequest(
                     kind=thing.key,
                     generic=thing.kind == "generic",
-                    quantity=mods.count,
+                    quantity=_per_each(reader, mods.start, mods.count, found.objects),
                     many=mods.many,
                     plural=thing.plural,
                     size=_size_class(mods.size_word, reader.index),
@@ -247,6 +247,19 @@ def _read_mentions(
         elif style is not None and style.key not in found.styles:
             found.styles.append(style.key)
     return found
+
+
+def _per_each(
+    reader: Reader, start: int, count: int | None, before: list[ObjectRequest]
+) -> int | None:
+    """``eight tables, each with four chairs``: four per table, 32 chairs."""
+    lead = [w for w in reader.words[max(start - 3, 0) : start] if w != ","]
+    if lead[-2:] not in (["each", "with"], ["each", "having"]) or not before:
+        return count
+    per = before[-1].quantity
+    if per is None or before[-1].excluded:
+        return count
+    return min((count or 1) * per, 10_000)
 
 
 def _size_class(word: str | None, index: PhraseIndex) -> Literal["small", "large"] | None:

@@ -15,7 +15,9 @@ records where each went), a relation between objects of one room becomes a
 * ``X with Y`` (``holds``): a small Y goes on X, a seat at X (``around``), anything else next
   to it;
 * ``on each side of``: two of the subject per target instance (a nightstand on each side of
-  the bed is two nightstands).
+  the bed is two nightstands);
+* ``side by side`` after one object is ``next to`` the object before it (a car and a
+  motorcycle side by side), after several it is ``in a row``.
 
 Anything else is noted and left out of the layout: relations across rooms, an object under another.
 """
@@ -57,6 +59,11 @@ def apply_relations(state: DraftPlan) -> None:
         if rel.kind in _UNSUPPORTED:
             state.note(f"'{_asked(state, rel)}': {_UNSUPPORTED[rel.kind]}; left to the defaults")
             continue
+        subject_obj = room.get(obj)
+        single = subject_obj is not None and subject_obj.quantity == 1
+        if rel.kind == "in_row" and single and rel.subject > 0:
+            # "a car and a motorcycle side by side": the two, next to each other
+            rel = rel.model_copy(update={"kind": "adjacent_to", "target": rel.subject - 1})
         if rel.target is None:
             _place_relation(state, room, obj, small, rel)
             continue

@@ -33,3 +33,8 @@ def test_a_near_synonym_is_the_known_kind_and_scene_words_are_not_things() -> No
 def test_kind_names_are_plan_object_names() -> None:
     assert kind_name("a Hamster-Cage!") == "hamster cage"
     assert kind_name("the ") is None
+
+
+def test_an_unknown_things_relation_words_are_not_its_name() -> None:
+    assert kind_name("a laser cutter against the wall") == "laser cutter"
+    assert kind_name("a scale near the door") == "scale"

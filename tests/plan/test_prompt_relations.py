@@ -120,3 +120,27 @@ def test_facing_a_wall_tv_means_facing_its_stand() -> None:
     plan = plan_offline("A living room with a sofa facing a TV and a TV stand.", 0)
     kinds = {(r.subject, r.kind, r.target) for r in plan.rooms[0].relations}
     assert ("sofa", "facing", "tv stand") in kinds
+
+
+def test_each_with_multiplies_the_count() -> None:
+    plan = plan_offline("A restaurant with eight round tables, each with four chairs.", 0)
+    counts = {o.name: o.quantity for r in plan.rooms for o in r.objects}
+    assert sum(q for n, q in counts.items() if "chair" in n) == 32
+
+
+def test_a_small_object_asked_for_replaces_the_templates_own() -> None:
+    plan = plan_offline("A garage with a workbench with a toolbox on it.", 0)
+    toolboxes = sum(
+        s.quantity * o.quantity
+        for r in plan.rooms
+        for o in r.objects
+        for s in o.on_top
+        if s.name == "toolbox"
+    )
+    assert toolboxes == 1
+
+
+def test_two_things_side_by_side_are_next_to_each_other() -> None:
+    plan = plan_offline("A garage with a car and a motorcycle side by side.", 0)
+    kinds = {(r.subject, r.kind, r.target) for r in plan.rooms[0].relations}
+    assert ("motorcycle", "adjacent_to", "car") in kinds

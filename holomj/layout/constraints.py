@@ -11,7 +11,8 @@ Five families, as in Holodeck (``ai2holodeck/generation/floor_objects.py``):
   ``face opposite to``.
 
 Beyond Holodeck, for what prompts say (:mod:`holomj.layout.place_relations`): the global
-``corner`` (against both walls of a convex corner), ``under window`` (back to a window's wall,
+``corner`` (against both walls of a convex corner), ``centre`` (at the room's centre),
+``under window`` (back to a window's wall,
 under its span), ``by window`` (close to a window), ``by door`` (near a door), ``facing window``
 and ``facing door`` (the front looks at one), and the distance
 ``adjacent to`` (footprints at most 45 cm apart: a prompt's "next to", "beside").
@@ -40,6 +41,7 @@ ConstraintKind = Literal[
     "edge",
     "middle",
     "corner",
+    "centre",
     "under_window",
     "by_window",
     "by_door",
@@ -60,7 +62,7 @@ ConstraintKind = Literal[
 ]
 # Global kinds that place an object by the room's corners, windows or doors.
 PLACE_KINDS = frozenset(
-    {"corner", "under_window", "by_window", "by_door", "facing_window", "facing_door"}
+    {"corner", "centre", "under_window", "by_window", "by_door", "facing_window", "facing_door"}
 )
 GLOBAL_KINDS = frozenset({"edge", "middle"}) | PLACE_KINDS
 ALL_KINDS: tuple[str, ...] = ConstraintKind.__args__  # type: ignore[attr-defined]
@@ -70,6 +72,7 @@ KIND_PHRASE: dict[str, str] = {
     "edge": "edge",
     "middle": "middle",
     "corner": "corner",
+    "centre": "center",  # phrases are read with "centre" spelled "center"
     "under_window": "under window",
     "by_window": "by window",
     "by_door": "by door",

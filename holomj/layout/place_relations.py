@@ -8,6 +8,8 @@ candidate centres like :func:`holomj.layout.geometry.relation_holds`:
 * ``corner``: the footprint lies within ``CORNER_TOLERANCE_M`` (or the edge tolerance, if
   smaller) of both walls of a convex corner
   (only corners between walls along x and y, as objects turn in quarter turns);
+* ``centre``: the footprint's centre lies within ``CENTRE_REACH_M`` of the room's centre
+  (its polygon's centroid) along x and along y;
 * ``under_window``: the object has its back to a window's wall, within the edge tolerance, and
   overlaps the window's span by at least ``UNDER_WINDOW_OVERLAP_M`` (or half its own width);
   objects taller than the sill cannot be there (the window zone is a hard rule);
@@ -40,6 +42,7 @@ from holomj.layout.geometry import (
 BY_WINDOW_GAP_M = 0.4
 BY_DOOR_GAP_M = 1.0
 UNDER_WINDOW_OVERLAP_M = 0.3
+CENTRE_REACH_M = 0.3  # 'centre': the centre at most this far from the room's along x and y
 CORNER_TOLERANCE_M = 0.08  # 'corner': tighter than 'edge', so it reads as in the corner
 
 
@@ -80,18 +83,21 @@ class Anchors:
     """The corners, windows and doors a room's place constraints refer to."""
 
     corners: tuple[Corner, ...] = ()
+    centre: tuple[float, float] = (0.0, 0.0)
     windows: tuple[OpeningSpan, ...] = ()
     doors: tuple[OpeningSpan, ...] = ()
 
 
 def room_anchors(
     walls: Sequence[WallSegment],
+    centre: tuple[float, float],
     windows: Sequence[tuple[Sequence[float], float]],
     doors: Sequence[tuple[Sequence[float], float]],
 ) -> Anchors:
     """Anchors of a room from its counter-clockwise walls and openings ``(position, width)``."""
     return Anchors(
         corners=tuple(_convex_corners(walls)),
+        centre=centre,
         windows=tuple(_span(walls, p, w) for p, w in windows),
         doors=tuple(_span(walls, p, w) for p, w in doors),
     )
@@ -226,6 +232,10 @@ def place_holds(
         return corner_holds(x, y, k, size, anchors.corners, tolerance)
     if kind == "under_window":
         return under_window_holds(x, y, k, size, anchors.windows, edge_tolerance)
+    if kind == "centre":
+        cx, cy = anchors.centre
+        x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+        return (np.abs(x - cx) <= CENTRE_REACH_M + EPS) & (np.abs(y - cy) <= CENTRE_REACH_M + EPS)
     if kind in ("facing_window", "facing_door"):
         return facing_holds(x, y, k, anchors.windows if kind == "facing_window" else anchors.doors)
     if kind in ("by_window", "by_door"):
@@ -242,6 +252,7 @@ def place_reason(kind: str, holds: bool, anchors: Anchors) -> str:
     """Why a place constraint holds or not, in words."""
     what = {
         "corner": ("corners", anchors.corners, "against both walls of a corner"),
+        "centre": ("centre", (anchors.centre,), "at the room's centre"),
         "under_window": ("windows", anchors.windows, "under a window"),
         "by_window": ("windows", anchors.windows, f"within {BY_WINDOW_GAP_M:g} m of a window"),
         "by_door": ("doors", anchors.doors, f"within {BY_DOOR_GAP_M:g} m of a door"),
@@ -257,6 +268,7 @@ __all__ = [
     "ADJACENT_GAP_M",
     "BY_DOOR_GAP_M",
     "BY_WINDOW_GAP_M",
+    "CENTRE_REACH_M",
     "CORNER_TOLERANCE_M",
     "UNDER_WINDOW_OVERLAP_M",
     "Anchors",

@@ -8,7 +8,8 @@ relation (:func:`relation_verdicts`). The expansion, per subject instance ``k`` 
 spread over the target's instances like the template lines):
 
 =================  =========================================================================
-corner, middle,    the place constraint (``wall`` is ``edge``)
+corner, middle,    the place constraint (``wall`` is ``edge``; one object in the middle is
+                   also at the room's ``centre``)
 under/by window,
 by door, wall,
 facing window/door
@@ -89,6 +90,8 @@ def relation_constraints(plan_room: PlanRoom, present: Iterable[str]) -> list[Co
         if rel.kind in _PLACE:
             for s in subjects:
                 add(s, _PLACE[rel.kind], None, source)
+                if rel.kind == "middle" and len(subjects) == 1:
+                    add(s, "centre", None, source)  # one thing in the middle: at its centre
             continue
         if rel.kind == "in_row":
             for prev, s in zip(subjects, subjects[1:], strict=False):

@@ -377,8 +377,10 @@ class PreparedRoom:
             if swing is not None:
                 zone = zone.union(swing)
             self.door_zones.append(zone)
+        centroid = self.room.centroid
         self.anchors = room_anchors(
             self.walls,
+            (float(centroid.x), float(centroid.y)),
             [(w.position, w.width) for w in problem.windows],
             [(d.position, d.width) for d in problem.doors],
         )

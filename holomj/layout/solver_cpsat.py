@@ -46,6 +46,7 @@ from holomj.layout.place_relations import (
     ADJACENT_GAP_M,
     BY_DOOR_GAP_M,
     BY_WINDOW_GAP_M,
+    CENTRE_REACH_M,
     CORNER_TOLERANCE_M,
     under_window_overlap,
 )
@@ -218,6 +219,11 @@ class _Model:
                 self._middle(s, a)
             elif c.kind == "corner":
                 self._corner(s, a)
+            elif c.kind == "centre":
+                cx, cy = prep.anchors.centre
+                for var, mid in ((self.x[a], cx), (self.y[a], cy)):
+                    self.m.add(var >= prep.units_up(mid - CENTRE_REACH_M)).only_enforce_if(s)
+                    self.m.add(var <= prep.units_down(mid + CENTRE_REACH_M)).only_enforce_if(s)
             elif c.kind == "under_window":
                 self._under_window(s, a)
             elif c.kind in ("by_window", "by_door"):

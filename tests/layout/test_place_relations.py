@@ -74,3 +74,16 @@ def test_facing_the_door_and_the_window(solver: str) -> None:
     desk, easel = result.placements["desk"], result.placements["easel"]
     assert desk.yaw_deg == 270.0 and abs(desk.x - 2.0) <= 0.45  # looks down at the door (y=0)
     assert easel.yaw_deg == 0.0 and abs(easel.y - 1.5) <= 0.6  # looks at the window (x=4)
+
+
+@pytest.mark.parametrize("solver", ["cpsat", "greedy"])
+def test_centre_puts_the_object_at_the_rooms_centre(solver: str) -> None:
+    data = {
+        **PROBLEM,
+        "objects": [{"id": "table", "width": 1.4, "depth": 0.8, "height": 0.75}],
+        "constraints_text": "table | middle | centre\n",
+    }
+    result = solve_room(problem_from_data(data), solver=solver)
+    assert all(c.satisfied for c in result.constraints)
+    table = result.placements["table"]
+    assert abs(table.x - 2.0) <= 0.3 + 1e-6 and abs(table.y - 1.5) <= 0.3 + 1e-6

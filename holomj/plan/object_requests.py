@@ -38,6 +38,10 @@ def apply_requests(state: DraftPlan) -> None:
             requests.append(ObjectRequest(kind=kind, quantity=1, phrase=phrase))
     for refused in parsed.refused:
         state.note(f"'{refused.phrase}': {refused.reason}")
+    # requests the prompt puts on something ("a lamp on the desk", "a desk with a lamp")
+    put_on = {r.subject for r in parsed.relations if r.kind == "on"} | {
+        r.target for r in parsed.relations if r.kind == "holds" and r.target is not None
+    }
     for index, request in enumerate(requests):
         if request.excluded or request.quantity == 0:
             _exclude(state, request)
@@ -47,7 +51,7 @@ def apply_requests(state: DraftPlan) -> None:
             state.request_homes[index] = reference
             continue
         room = _request_room(state, request)
-        name = _resolve_kind(state, request, room)
+        name = _resolve_kind(state, request, room, index in put_on)
         kind = state.object_kind(name)
         quantity = _quantity(request, kind, room)
         if kind.placement == "object":
@@ -103,11 +107,18 @@ def _free_floor(state: DraftPlan, room: DraftRoom) -> float:
     return state.kb.limits.footprint_fraction * room.floor_area - used
 
 
-def _resolve_kind(state: DraftPlan, request: ObjectRequest, room: DraftRoom) -> str:
-    """A generic word (``chair``) as the kind the room has, else the first kind it may mean."""
+def _resolve_kind(
+    state: DraftPlan, request: ObjectRequest, room: DraftRoom, put_on: bool = False
+) -> str:
+    """A generic word (``chair``) as the kind the room has, else the first kind it may mean; put
+    on something (``a lamp on the desk``), the first small kind it may mean."""
     if not request.generic:
         return request.kind
     kinds = state.kb.generics[request.kind].kinds
+    if put_on:
+        small = [k for k in kinds if state.kb.objects[k].placement == "object"]
+        if small:
+            return small[0]
     for want in kinds:
         if room.get(want) is not None:
             return want

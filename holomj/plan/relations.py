@@ -12,8 +12,8 @@ records where each went), a relation between objects of one room becomes a
   furniture stands on it instead of hanging on the wall;
 * ``above``: the wall object hangs above that floor object; a relation to a wall object that
   hangs above a floor object (``facing the TV``) is one to that floor object;
-* ``X with Y`` (``holds``): a small Y goes on X, a seat at X (``around``), anything else next
-  to it;
+* ``X with Y`` (``holds``): a small Y goes on X (one on each X when Y has no number: two
+  nightstands with lamps), a seat at X (``around``), anything else next to it;
 * ``on each side of``: two of the subject per target instance (a nightstand on each side of
   the bed is two nightstands);
 * ``side by side`` after one object is ``next to`` the object before it (a car and a
@@ -82,6 +82,13 @@ def apply_relations(state: DraftPlan) -> None:
             obj, t_obj, small, t_small = t_obj, obj, t_small, small
             kind = _held_kind(state, room, obj, small)
         _object_relation(state, room, obj, small, kind, t_obj, t_small, phrase)
+        if rel.kind == "holds" and small and rel.target is not None:
+            held = state.parsed.objects[rel.target]
+            if held.quantity is None and not held.many:  # "nightstands with lamps": one each
+                holder = room.get(t_obj)
+                for item in holder.on_top if holder is not None else []:
+                    if item.name == obj:
+                        item.quantity = 1
 
 
 def _home(state: DraftPlan, index: int) -> tuple[DraftRoom, str, bool] | None:

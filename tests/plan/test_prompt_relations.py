@@ -144,3 +144,12 @@ def test_two_things_side_by_side_are_next_to_each_other() -> None:
     plan = plan_offline("A garage with a car and a motorcycle side by side.", 0)
     kinds = {(r.subject, r.kind, r.target) for r in plan.rooms[0].relations}
     assert ("motorcycle", "adjacent_to", "car") in kinds
+
+
+def test_a_lamp_put_on_something_is_a_small_lamp_one_on_each() -> None:
+    plan = plan_offline("A hotel room with a bed and two nightstands with lamps.", 0)
+    room = plan.rooms[0]
+    stands = next(o for o in room.objects if o.name == "nightstand")
+    lamps = [s for s in stands.on_top if s.name == "desk lamp"]
+    assert stands.quantity == 2 and [s.quantity for s in lamps] == [1]
+    assert all(o.name != "floor lamp" or not o.requested for o in room.objects)

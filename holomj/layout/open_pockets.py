@@ -6,8 +6,9 @@ door's keep-out zone, with a margin both ways (:data:`FREE_RADIUS_M`, :data:`PAS
 around :data:`ROBOT_RADIUS_M`). Furniture clusters can cut off pockets (the corner behind
 an armchair and a side table); :func:`open_pockets` moves the furniture around a pocket, a grid
 step at a time up to :data:`MAX_SHIFT_M`, keeping a move only when every hard rule still holds,
-no satisfied constraint is lost and the reachable share grows, until the share reaches
-:data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were tried.
+no satisfied constraint is lost (unless less than :data:`CUT_OFF_SHARE` is reachable: then the
+door is cut off and soft constraints give way) and the reachable share grows, until the share
+reaches :data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were tried.
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ CELL_M = 0.05
 TARGET_SHARE = 0.985
 MAX_SHIFT_M = 0.8
 MAX_ROUNDS = 8
+CUT_OFF_SHARE = 0.9  # below this share a door is cut off: moves may then cost soft constraints
 MAX_TRIALS = 600  # poses tried in all, so that a crowded room stays fast
 
 
@@ -102,7 +104,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     steps = max(1, round(MAX_SHIFT_M / g))
     trials = 0
     for _ in range(MAX_ROUNDS):
-        best: tuple[float, dict[int, Pose]] | None = None
+        best: tuple[tuple[float, float], dict[int, Pose]] | None = None
         for i in _bordering(prep, poses, pocket, meter):
             x, y, k = poses[i]
             for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)):
@@ -114,14 +116,16 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                     checks, _ = hard_checks(prep, trial)
                     if not checks.ok:
                         break
-                    if satisfied_weight(prep, _metres(trial, g)) < weight - 1e-9:
-                        continue
+                    new_weight = satisfied_weight(prep, _metres(trial, g))
+                    if new_weight < weight - 1e-9 and share >= CUT_OFF_SHARE:
+                        continue  # soft constraints give way only to a door cut off
                     new_share, _ = meter.pockets(_rects(prep, trial))
-                    if new_share > share + 1e-6 and (best is None or new_share > best[0]):
-                        best = (new_share, trial)
+                    key = (new_share, new_weight)
+                    if new_share > share + 1e-6 and (best is None or key > best[0]):
+                        best = (key, trial)
         if best is None:
             break
-        share, poses = best
+        (share, weight), poses = best
         share, pocket = meter.pockets(_rects(prep, poses))
         if share >= TARGET_SHARE:
             break

@@ -1,12 +1,12 @@
 """The prompt's object requests, merged into the rooms of an offline plan.
 
 Requested objects go to the room they were asked in, else the roomiest room that has (or would
-have) them; generic words (``chair``) become the kind that room uses; unknown words take the
-nearest known kind or stay themselves (:mod:`~holomj.plan.new_kinds`); excluded objects
-(``without a tv``) are removed; small objects go onto the room's receptacles, adding one when it
-has none. Counts: a number as given ("a pair of" is 2, "a few" and "several" 3), "lots of" the
-kind's ``many``, and a plural without a number 2, 3 or 4 by the room's floor area
-(:data:`PLURAL_AREAS_M2`).
+have) them, else the roomiest room of a type they belong in, else the scene's largest room;
+generic words (``chair``) become the kind that room uses; unknown words take the nearest known
+kind or stay themselves (:mod:`~holomj.plan.new_kinds`); excluded objects (``without a tv``) are
+removed; small objects go onto the room's receptacles, adding one when it has none. Counts: a
+number as given ("a pair of" is 2, "a few" and "several" 3), "lots of" the kind's ``many``, and a
+plural without a number 2, 3 or 4 by the room's floor area (:data:`PLURAL_AREAS_M2`).
 """
 
 from __future__ import annotations
@@ -87,7 +87,7 @@ def _quantity(request: ObjectRequest, kind: ObjectKind, room: DraftRoom) -> int:
 
 def _request_room(state: DraftPlan, request: ObjectRequest) -> DraftRoom:
     """The room an object is asked in, else the roomiest room that has (or would have) it, else
-    the roomiest room of the scene."""
+    the roomiest room of a type it belongs in, else the scene's main room (its largest)."""
     if request.room is not None:
         for room in state.rooms:
             if room.template_id == request.room:
@@ -97,8 +97,12 @@ def _request_room(state: DraftPlan, request: ObjectRequest) -> DraftRoom:
         homes = [r for r in state.rooms if r.get(want) is not None or want in r.template.kinds()]
         if homes:
             return max(homes, key=lambda r: (_free_floor(state, r), -state.rooms.index(r)))
-    main = [r for r in state.rooms if r.entry_id is not None] or state.rooms
-    return max(main, key=lambda r: (_free_floor(state, r), -state.rooms.index(r)))
+    belongs = {t for want in kinds for t in state.object_kind(want).rooms}
+    homes = [r for r in state.rooms if r.template_id in belongs]
+    if homes:
+        return max(homes, key=lambda r: (_free_floor(state, r), -state.rooms.index(r)))
+    # the scene's main room: its largest
+    return max(state.rooms, key=lambda r: (r.floor_area, -state.rooms.index(r)))
 
 
 def _free_floor(state: DraftPlan, room: DraftRoom) -> float:

@@ -38,3 +38,9 @@ def test_kind_names_are_plan_object_names() -> None:
 def test_an_unknown_things_relation_words_are_not_its_name() -> None:
     assert kind_name("a laser cutter against the wall") == "laser cutter"
     assert kind_name("a scale near the door") == "scale"
+
+
+def test_a_thing_no_room_type_has_goes_to_the_main_room() -> None:
+    plan = plan_offline("A studio apartment with a telescope by the window.", 0)
+    home = next(r.id for r in plan.rooms for o in r.objects if o.name == "telescope")
+    assert home == max(plan.rooms, key=lambda r: r.area_m2 or 0).id  # not the bathroom

@@ -1,5 +1,6 @@
 """Whether the plan's structural relations hold in the finished scene: ``on`` (a small object
-on the receptacle the request named) and ``above`` (a wall object over a floor object).
+on the receptacle the request named), ``above`` (a wall object over a floor object) and
+``facing`` between a floor object and a wall object (the line of sight meets it).
 
 The layout relations are judged by the layout itself
 (:func:`holomj.layout.relation_constraints.relation_verdicts`); these two are kept by the plan's
@@ -18,6 +19,7 @@ from holomj.spec.plan import PlanRelation, ScenePlan, instance_name
 from holomj.spec.scene import SceneObject, SceneSpec
 
 ABOVE_REACH_M = 0.3  # a wall object's centre at most this far beyond the floor object's side
+FACING_SLACK_M = 0.05  # a wall object is looked at when the line of sight passes this close
 
 
 def structural_verdicts(
@@ -35,7 +37,23 @@ def structural_verdicts(
     for room in plan.rooms:
         counts = {o.name: o.quantity for o in room.objects}
         small = {s.name: s for o in room.objects for s in o.on_top}
+        walls = {o.name for o in room.objects if o.placement == "wall"}
         for rel in room.relations:
+            if (
+                rel.kind == "facing"
+                and rel.target is not None
+                and walls & {rel.subject, rel.target}
+            ):
+                looker, hung = (
+                    (rel.target, rel.subject) if rel.subject in walls else (rel.subject, rel.target)
+                )
+                held, detail = _looks_at(
+                    objects.get(object_id(room.id, instance_name(looker, 0))),
+                    objects.get(object_id(room.id, instance_name(hung, 0))),
+                    library,
+                )
+                out.append(_verdict(room.id, rel, held, detail))
+                continue
             if rel.kind not in ("on", "above") or rel.target is None:
                 continue
             targets = [
@@ -81,6 +99,22 @@ def _on(
             if category is None or library.get(obj.asset).meta.category == category:
                 return True, f"{oid} rests on {rid}"
     return False, "none was placed on " + (", ".join(receptacles) or "it (not in the scene)")
+
+
+def _looks_at(
+    looker: SceneObject | None, hung: SceneObject | None, library: AssetLibrary
+) -> tuple[bool, str]:
+    """Whether ``looker``'s front ray meets the wall object ``hung`` (within its width)."""
+    if looker is None or hung is None:
+        return False, "not both in the scene"
+    yaw = math.radians(looker.yaw_deg)
+    fx, fy = math.cos(yaw), math.sin(yaw)
+    dx, dy = hung.position[0] - looker.position[0], hung.position[1] - looker.position[1]
+    ahead = dx * fx + dy * fy
+    side = abs(-dx * fy + dy * fx)
+    half = library.get(hung.asset).meta.size[1] * hung.scale3[1] / 2
+    held = ahead > 0 and side <= half + FACING_SLACK_M
+    return held, f"{side:.2f} m beside its line of sight, {ahead:.2f} m ahead"
 
 
 def _above(subject: SceneObject | None, targets: Sequence[SceneObject]) -> tuple[bool, str]:

@@ -25,8 +25,9 @@ in a row           instance k ``adjacent to``, ``face same as`` and ``center ali
 =================  =========================================================================
 
 ``on``, ``above`` and ``ceiling`` are kept by the plan's structure (a receptacle's small
-objects, a wall object's ``above``): they have no layout constraint and are judged on the
-finished scene.
+objects, a wall object's ``above``), and so is ``facing`` between a floor object and a wall object
+(the wall object's ``faced_by``): they have no layout constraint and are judged on the finished
+scene.
 """
 
 from __future__ import annotations
@@ -117,6 +118,11 @@ def relation_constraints(plan_room: PlanRoom, present: Iterable[str]) -> list[Co
     return out
 
 
+def _between_floor_objects(rel: PlanRelation, floor: set[str]) -> bool:
+    """A layout relation: its subject and its target (if any) stand on the floor."""
+    return rel.subject in floor and (rel.target is None or rel.target in floor)
+
+
 def relation_verdicts(
     plan_room: PlanRoom, reports: Sequence[ConstraintReport]
 ) -> list[dict[str, Any]]:
@@ -126,8 +132,9 @@ def relation_verdicts(
         if report.source and report.source.startswith(SOURCE_PREFIX):
             by_source.setdefault(report.source, []).append(report)
     out = []
+    floor = {o.name for o in plan_room.objects if o.placement == "floor"}
     for rel in plan_room.relations:
-        if rel.kind in STRUCTURAL_KINDS:
+        if rel.kind in STRUCTURAL_KINDS or not _between_floor_objects(rel, floor):
             continue
         found = by_source.get(source_of(rel), [])
         held = sum(r.satisfied for r in found)

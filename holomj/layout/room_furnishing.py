@@ -15,6 +15,7 @@ retrieved or placed is reported with the reason; nothing is dropped silently.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -224,7 +225,9 @@ def furnish_room(
                 room=room.id,
             )
         )
-        floor_items.append(FloorItem(oid, _footprint(placement), meta.size[2]))
+        yaw = math.radians(placement.yaw_deg)
+        front = (round(math.cos(yaw), 9), round(math.sin(yaw), 9))
+        floor_items.append(FloorItem(oid, _footprint(placement), meta.size[2], front))
         plan_obj = by_name[instance.rsplit("-", 1)[0]]
         if plan_obj.on_top:
             out.receptacles.append((oid, plan_obj))
@@ -576,18 +579,21 @@ def _hang(
     out: RoomFurniture,
 ) -> None:
     above = {o.name: o.above for o in plan_room.objects if o.placement == "wall"}
+    faced_by = {o.name: o.faced_by for o in plan_room.objects if o.placement == "wall"}
     requests = []
     asset_of = {object_id(room.id, instance): a for instance, a in assets.items()}
     for instance, asset_id in assets.items():
         meta = library.get(asset_id).meta
         depth, width, height = meta.size
         target = above.get(instance.rsplit("-", 1)[0])
+        looker = faced_by.get(instance.rsplit("-", 1)[0])
         requests.append(
             WallObjectRequest(
                 id=object_id(room.id, instance),
                 size=(width, depth, height),
                 kind=WALL_KINDS.get(meta.category, "other"),
                 above=object_id(room.id, instance_name(target, 0)) if target else None,
+                faced_by=object_id(room.id, instance_name(looker, 0)) if looker else None,
             )
         )
     if not requests:

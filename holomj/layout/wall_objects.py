@@ -40,7 +40,7 @@ from typing import Annotated
 
 import numpy as np
 from pydantic import Field
-from shapely.geometry import Point, Polygon
+from shapely.geometry import LineString, Point, Polygon
 
 from holomj.errors import SpecError
 from holomj.layout.floorplan import normal_type
@@ -75,6 +75,9 @@ class WallObjectRequest(FrozenModel):
     size: tuple[PositiveFloat, PositiveFloat, PositiveFloat]
     kind: str = Field(default="painting", max_length=64)
     above: Identifier | None = None
+    faced_by: Identifier | None = Field(
+        default=None, description="Hang where this floor object looks (its front ray)."
+    )
     height_m: Annotated[float, Field(ge=0.0, le=20.0)] | None = Field(
         default=None, description="Height of the object's bottom; default by kind."
     )
@@ -87,6 +90,7 @@ class FloorItem:
     id: str
     footprint: Polygon
     height: float
+    front: tuple[float, float] | None = None  # the unit direction it faces, if known
 
 
 @dataclass(frozen=True)
@@ -303,7 +307,19 @@ def place_wall_objects(
             )
             continue
         note = None
-        if req.above is not None:
+        looker = by_id.get(req.faced_by) if req.faced_by is not None else None
+        if looker is not None and looker.front is not None and req.above is None:
+            outcome = _place_faced(
+                req, looker, faces, doors, windows, walls, floor, placed, base, wall_height
+            )
+            if isinstance(outcome, str):
+                fallback = _place_free(
+                    req, faces, doors, windows, walls, floor, placed, base, wall_height, rng
+                )
+                if not isinstance(fallback, str):
+                    note = f"{outcome}: hung on the widest free stretch instead"
+                    outcome = fallback
+        elif req.above is not None:
             outcome = _place_above(
                 req,
                 by_id[req.above],
@@ -395,6 +411,54 @@ def _place_above(
     if _hits_placed(_footprint(face, t, width, depth), base, base + height, placed):
         return f"the wall above {item.id!r} is taken by another wall object"
     return face, t
+
+
+FACED_SHIFT_M = 0.6  # how far along the wall a faced object may slide off the ray's point
+
+
+def _place_faced(
+    req: WallObjectRequest,
+    looker: FloorItem,
+    faces: Sequence[_Face],
+    doors: Sequence[Door],
+    windows: Sequence[Window],
+    walls: Sequence[Wall],
+    floor: Sequence[FloorItem],
+    placed: Sequence[_Placed],
+    base: float,
+    wall_height: float,
+) -> tuple[_Face, float] | str:
+    """Where the ray from ``looker``'s centre along its front meets a wall face, or as near
+    along that face as the object fits (up to ``FACED_SHIFT_M``)."""
+    width, depth, height = req.size
+    assert looker.front is not None
+    c = looker.footprint.centroid
+    fx, fy = looker.front
+    ray = LineString([(c.x, c.y), (c.x + fx * 50.0, c.y + fy * 50.0)])
+    hits = []
+    for face in faces:
+        segment = LineString([face.wall.point_at(0.0), face.wall.point_at(face.wall.length)])
+        point = ray.intersection(segment)
+        if point.is_empty or point.geom_type != "Point":
+            continue
+        hits.append((Point(c.x, c.y).distance(point), face, point))
+    if not hits:
+        return f"{looker.id!r} looks at no wall"
+    _, face, point = min(hits, key=lambda h: (h[0], h[1].wall.id))
+    t0, _ = face.wall.locate((point.x, point.y))
+    blocks = _blocks(face, doors, windows, walls, floor, depth, wall_height, None)
+    for shift in sorted({round(k * 0.05, 2) for k in range(-12, 13)}, key=abs):
+        if abs(shift) > FACED_SHIFT_M + 1e-9:
+            continue
+        t = t0 + shift
+        if not _fits_on(face, t, width):
+            continue
+        if _clear(t - width / 2, t + width / 2, base, base + height, blocks) is not None:
+            continue
+        if _hits_placed(_footprint(face, t, width, depth), base, base + height, placed):
+            continue
+        return face, t
+    return f"the wall {looker.id!r} looks at is taken where it looks"
 
 
 def _dist_to_face(face: _Face, point: Point) -> float:

@@ -46,6 +46,7 @@ class DraftObject:
     per_max: int = 1
     seat: bool = False
     above: str | None = None
+    faced_by: str | None = None  # wall objects: the floor object that looks at it
     on_top: list[DraftSmall] = field(default_factory=list)
     adjectives: list[str] = field(default_factory=list)
     asked: str = ""  # the prompt's words for a requested object

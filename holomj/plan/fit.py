@@ -86,6 +86,8 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
     for obj in room.objects:
         if obj.above is not None and room.get(obj.above) is None:
             obj.above = None
+        if obj.faced_by is not None and room.get(obj.faced_by) is None:
+            obj.faced_by = None
     _note_drops(state, room, start, reasons)
 
 

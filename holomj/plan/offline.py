@@ -165,6 +165,7 @@ def _plan_object(
         variance=obj.variance,  # type: ignore[arg-type]
         placement=obj.kind.placement,  # type: ignore[arg-type]
         above=obj.above,
+        faced_by=obj.faced_by,
         on_top=[
             PlanSmallObject(
                 name=s.name,

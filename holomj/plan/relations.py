@@ -11,7 +11,9 @@ records where each went), a relation between objects of one room becomes a
 * ``on``: the small object goes on that receptacle (and only there); a TV put on a piece of
   furniture stands on it instead of hanging on the wall;
 * ``above``: the wall object hangs above that floor object; a relation to a wall object that
-  hangs above a floor object (``facing the TV``) is one to that floor object;
+  hangs above a floor object (``facing the TV``) is one to that floor object; a wall object
+  faced by a floor object (``salon chairs facing a mirror``, ``a TV facing the bed``) hangs
+  where the floor object looks;
 * ``X with Y`` (``holds``): a small Y goes on X (one on each X when Y has no number: two
   nightstands with lamps), a seat at X (``around``), anything else next to it;
 * ``on each side of``: two of the subject per target instance (a nightstand on each side of
@@ -172,6 +174,14 @@ def _object_relation(
         else:
             state.note(f"'{name} {phrase}': only a wall object hangs above a floor object")
         return
+    if kind in ("facing", "across_from") and obj.floor != other.floor:
+        # a floor object facing a wall object (or a wall object facing a floor object): the
+        # wall object hangs where the floor object looks
+        looker, hung = (obj, other) if obj.floor else (other, obj)
+        if hung.above is None:
+            hung.faced_by = looker.name
+            _add(room, PlanRelation(subject=name, kind="facing", target=target, phrase=phrase))
+            return
     if not (obj.floor and other.floor):
         state.note(f"'{name} {phrase}': a layout relation between floor objects only; not kept")
         return

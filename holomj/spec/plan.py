@@ -65,6 +65,11 @@ class PlanObject(FrozenModel):
         default=None,
         description="Wall objects only: hang above this floor object (its first instance).",
     )
+    faced_by: ObjectName | None = Field(
+        default=None,
+        description="Wall objects only: hang where this floor object looks (its first "
+        "instance's front meets the wall): a mirror the salon chair faces.",
+    )
     on_top: list[PlanSmallObject] = Field(default_factory=list, max_length=20)
     requested: bool = Field(default=False, description="Explicitly asked for in the request.")
     defining: bool = Field(
@@ -77,6 +82,8 @@ class PlanObject(FrozenModel):
     def _check(self) -> PlanObject:
         if self.above is not None and self.placement == "floor":
             raise ValueError("'above' is for wall and ceiling objects")
+        if self.faced_by is not None and self.placement != "wall":
+            raise ValueError("'faced_by' is for wall objects")
         return self
 
     def instances(self) -> list[str]:
@@ -170,6 +177,10 @@ class PlanRoom(FrozenModel):
         for obj in self.objects:
             if obj.above is not None and obj.above not in floor:
                 raise ValueError(f"{obj.name!r} hangs above {obj.above!r}, not a floor object here")
+            if obj.faced_by is not None and obj.faced_by not in floor:
+                raise ValueError(
+                    f"{obj.name!r} is faced by {obj.faced_by!r}, not a floor object here"
+                )
         if self.id in self.adjacent_to:
             raise ValueError("a room cannot be adjacent to itself")
         small = {s.name for o in self.objects for s in o.on_top}

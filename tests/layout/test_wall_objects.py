@@ -280,3 +280,15 @@ def test_ceiling_lights() -> None:
             )
             assert light.kind == "point"
     SceneSpec(rooms=rooms[:2], lights=[li for li in lights if "ell" not in li.id])
+
+
+def test_faced_wall_object_hangs_on_the_line_of_sight() -> None:
+    walls = derive_walls(ROOMS)
+    chair = FloorItem("chair", box(2.75, 1.5, 3.25, 2.0), 0.9, front=(0.0, 1.0))  # looks north
+    req = WallObjectRequest(id="mirror", size=(0.6, 0.05, 0.9), kind="mirror", faced_by="chair")
+    placed, unplaced = place_wall_objects(
+        ROOMS[0], walls, DOORS, WINDOWS, [chair], [req], np.random.default_rng(0)
+    )
+    assert unplaced == []
+    (p,) = placed
+    assert p.x == pytest.approx(3.0, abs=0.05) and p.y > 3.8  # on the north wall, ahead of it

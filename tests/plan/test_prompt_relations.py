@@ -153,3 +153,13 @@ def test_a_lamp_put_on_something_is_a_small_lamp_one_on_each() -> None:
     lamps = [s for s in stands.on_top if s.name == "desk lamp"]
     assert stands.quantity == 2 and [s.quantity for s in lamps] == [1]
     assert all(o.name != "floor lamp" or not o.requested for o in room.objects)
+
+
+def test_a_wall_object_faced_by_a_floor_object_hangs_where_it_looks() -> None:
+    plan = plan_offline("A hair salon with a salon chair facing a mirror.", 0)
+    room = plan.rooms[0]
+    mirror = next(o for o in room.objects if o.name == "mirror")
+    assert mirror.faced_by == "salon chair"
+    assert ("salon chair", "facing", "mirror") in {
+        (r.subject, r.kind, r.target) for r in room.relations
+    }

@@ -338,6 +338,19 @@ def free_walk_mask(
         if not inner.is_empty
         else np.zeros(xs.shape, dtype=bool)
     )
+    return clear_of(free, xs, ys, rects, radius)
+
+
+def clear_of(
+    free: np.ndarray,
+    xs: np.ndarray,
+    ys: np.ndarray,
+    rects: Sequence[Sequence[float]],
+    radius: float,
+) -> np.ndarray:
+    """``free`` without the cells (centres ``xs``, ``ys``) closer than ``radius`` to a rect
+    ``(xmin, ymin, xmax, ymax)`` (a new mask)."""
+    free = free.copy()
     for xmin, ymin, xmax, ymax in rects:
         dx = np.maximum(np.maximum(xmin - xs, xs - xmax), 0.0)
         dy = np.maximum(np.maximum(ymin - ys, ys - ymax), 0.0)
@@ -385,13 +398,7 @@ class WalkChecker:
 
     def _free_cells(self, rects: Sequence[Sequence[float]]) -> np.ndarray:
         """Cells where a walker of ``radius`` fits beside these footprints."""
-        free = self.base.copy()
-        xs, ys, r2 = self.xs, self.ys, self.radius * self.radius
-        for xmin, ymin, xmax, ymax in rects:
-            dx = np.maximum(np.maximum(xmin - xs, xs - xmax), 0.0)
-            dy = np.maximum(np.maximum(ymin - ys, ys - ymax), 0.0)
-            free &= dx * dx + dy * dy >= r2
-        return free
+        return clear_of(self.base, self.xs, self.ys, rects, self.radius)
 
 
 def _doors_connected(labels: np.ndarray, cells: Sequence[np.ndarray]) -> bool:

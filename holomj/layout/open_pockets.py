@@ -55,21 +55,10 @@ class ReachMeter:
         self.sweep = ndimage.generate_binary_structure(2, 2)
         self.sweep_steps = steps
 
-    def _clear(
-        self, base: np.ndarray, radius: float, rects: Sequence[Sequence[float]]
-    ) -> np.ndarray:
-        free = base.copy()
-        r2 = radius * radius
-        for xmin, ymin, xmax, ymax in rects:
-            dx = np.maximum(np.maximum(xmin - self.xs, self.xs - xmax), 0.0)
-            dy = np.maximum(np.maximum(ymin - self.ys, self.ys - ymax), 0.0)
-            free &= dx * dx + dy * dy >= r2
-        return free
-
     def pockets(self, rects: Sequence[Sequence[float]]) -> tuple[float, np.ndarray]:
         """The reachable share and the mask of free cells not reachable from a door."""
-        free = self._clear(self.base_free, FREE_RADIUS_M, rects)
-        passable = self._clear(self.base_pass, PASSAGE_RADIUS_M, rects)
+        free = geo.clear_of(self.base_free, self.xs, self.ys, rects, FREE_RADIUS_M)
+        passable = geo.clear_of(self.base_pass, self.xs, self.ys, rects, PASSAGE_RADIUS_M)
         total = int(free.sum())
         if total == 0 or not self.applicable:
             return 1.0, np.zeros_like(free)
@@ -84,7 +73,7 @@ class ReachMeter:
 
 def reachable_share(prep: PreparedRoom, poses: dict[int, Pose]) -> float:
     """The reachable share of the room's free floor with the objects at ``poses``."""
-    return ReachMeter(prep).pockets(_rects(prep, poses))[0]
+    return ReachMeter(prep).pockets(prep.footprints(poses))[0]
 
 
 def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
@@ -96,11 +85,11 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     if not meter.applicable or not poses:
         return poses
     g = prep.grid
-    share, pocket = meter.pockets(_rects(prep, poses))
+    share, pocket = meter.pockets(prep.footprints(poses))
     if share >= TARGET_SHARE:
         return poses
     poses = dict(poses)
-    weight = satisfied_weight(prep, _metres(poses, g))
+    weight = satisfied_weight(prep, prep.metres(poses))
     steps = max(1, round(MAX_SHIFT_M / g))
     trials = 0
     for _ in range(MAX_ROUNDS):
@@ -116,17 +105,17 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                     checks, _ = hard_checks(prep, trial)
                     if not checks.ok:
                         break
-                    new_weight = satisfied_weight(prep, _metres(trial, g))
+                    new_weight = satisfied_weight(prep, prep.metres(trial))
                     if new_weight < weight - 1e-9 and share >= CUT_OFF_SHARE:
                         continue  # soft constraints give way only to a door cut off
-                    new_share, _ = meter.pockets(_rects(prep, trial))
+                    new_share, _ = meter.pockets(prep.footprints(trial))
                     key = (new_share, new_weight)
                     if new_share > share + 1e-6 and (best is None or key > best[0]):
                         best = (key, trial)
         if best is None:
             break
         (share, weight), poses = best
-        share, pocket = meter.pockets(_rects(prep, poses))
+        share, pocket = meter.pockets(prep.footprints(poses))
         if share >= TARGET_SHARE:
             break
     return poses
@@ -150,12 +139,3 @@ def _bordering(
         if (dx * dx + dy * dy <= reach * reach).any():
             out.append(i)
     return sorted(out, key=lambda i: (prep.items[i].priority, i))
-
-
-def _rects(prep: PreparedRoom, poses: dict[int, Pose]) -> list[tuple[float, ...]]:
-    g = prep.grid
-    return [prep.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()]
-
-
-def _metres(poses: dict[int, Pose], g: float) -> dict[int, tuple[float, float, int]]:
-    return {i: (x * g, y * g, k) for i, (x, y, k) in poses.items()}

@@ -447,6 +447,16 @@ class PreparedRoom:
         item = self.items[i]
         return geo.footprint(x, y, k, item.width, item.depth)
 
+    def metres(self, poses: dict[int, tuple[int, int, int]]) -> dict[int, tuple[float, float, int]]:
+        """Grid poses ``{index: (X, Y, k)}`` in metres ``{index: (x, y, k)}``."""
+        g = self.grid
+        return {i: (x * g, y * g, k) for i, (x, y, k) in poses.items()}
+
+    def footprints(self, poses: dict[int, tuple[int, int, int]]) -> list[tuple[float, ...]]:
+        """The footprint rectangles (metres) of the objects at grid ``poses``."""
+        g = self.grid
+        return [self.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()]
+
     # ------------------------------------------------------------------ evaluation
 
     def evaluate(

@@ -157,11 +157,10 @@ def solve_room(
         else:
             missing = [i for i in range(len(prep.items)) if i not in found]
             found, extra_reasons = insert_unplaced(prep, found, missing, rng)
-            g = prep.grid
-            cp_key = (_placed_priority(prep, found), satisfied_weight(prep, _metres(found, g)))
+            cp_key = (_placed_priority(prep, found), satisfied_weight(prep, prep.metres(found)))
             gr_key = (
                 _placed_priority(prep, greedy.poses),
-                satisfied_weight(prep, _metres(greedy.poses, g)),
+                satisfied_weight(prep, prep.metres(greedy.poses)),
             )
             if cp_key >= gr_key:
                 poses, reasons, used = found, extra_reasons, "cpsat"
@@ -194,7 +193,7 @@ def snap_to_walls(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]
     checks, _ = hard_checks(prep, poses)
     if not checks.ok:
         return poses
-    weight = satisfied_weight(prep, _metres(poses, g))
+    weight = satisfied_weight(prep, prep.metres(poses))
     steps = max(1, prep.units_up(prep.settings.edge_tolerance_m + g))
     for i in edge:
         if i not in poses:
@@ -206,21 +205,15 @@ def snap_to_walls(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]
             checks, _ = hard_checks(prep, trial)
             if not checks.ok:
                 break
-            new_weight = satisfied_weight(prep, _metres(trial, g))
+            new_weight = satisfied_weight(prep, prep.metres(trial))
             if new_weight < weight - 1e-9:
                 break
             poses, weight = trial, new_weight
     return poses
 
 
-def _metres(poses: dict[int, Pose], g: float) -> dict[int, tuple[float, float, int]]:
-    return {i: (x * g, y * g, k) for i, (x, y, k) in poses.items()}
-
-
 def _walk_ok(prep: PreparedRoom, poses: dict[int, Pose]) -> bool:
-    g = prep.grid
-    rects = [prep.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()]
-    return prep.walk.check(rects).ok
+    return prep.walk.check(prep.footprints(poses)).ok
 
 
 def _run_cpsat(
@@ -359,8 +352,7 @@ def _report(
     status: str,
     warnings: list[str],
 ) -> LayoutResult:
-    g = prep.grid
-    metres = _metres(poses, g)
+    metres = prep.metres(poses)
     placements = {
         prep.items[i].id: Placement(
             x=round(x, 6),

@@ -1,4 +1,4 @@
-"""The Ray engine: the same job function as Ray tasks, so a batch scales out to a cluster.
+"""The Ray engine: the same job function run by Ray workers, so a batch scales out to a cluster.
 
 ``address``: ``local`` starts a private Ray instance on this machine with ``workers`` CPUs;
 ``auto`` joins the cluster started with ``ray start`` on this machine; ``ray://HOST:PORT``
@@ -6,12 +6,12 @@ connects a Ray client to a remote head. Every node needs holomj installed and mu
 and the asset library at the same paths (a shared filesystem), since each task writes its scene
 folder itself. When Ray is already initialised in this process, that session is used as is.
 
-Isolation relies on Ray's worker processes: each task runs in a Ray worker with
-``max_retries=0``; a worker that dies (segfault, ``os._exit``, out of memory) fails its task
-alone with ``WorkerCrashedError``, and a task past its timeout is cancelled with ``force=True``,
-which kills its worker. Ray reuses workers between tasks, so the text model is loaded once per
-worker, as in the local engine. At most ``workers`` tasks are in flight, so a task starts when it
-is submitted and its timeout counts from then.
+Each of the ``workers`` slots is a Ray actor (one worker process, one CPU) that runs one job at a
+time, so the text model is loaded once per worker, as in the local engine. A job is handed to a
+slot only once its actor has started, so a job's timeout counts from when it starts running, not
+from when a (possibly slow, loaded or remote) worker process is being brought up. An actor that
+dies (segfault, ``os._exit``, out of memory) fails its job alone; a job past its timeout has its
+actor killed. Either way a fresh actor takes the slot.
 """
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ from __future__ import annotations
 import contextlib
 import time
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -32,6 +33,7 @@ from holomj.errors import InputError
 RAY_FIX = "pip install 'holomj[ray]'"
 ADDRESS_FIX = "use local, auto (a cluster started with 'ray start --head') or ray://HOST:PORT"
 CANCEL_WAIT_S = 30.0
+MAX_START_FAILURES = 3  # worker actors that fail to start, in a row, before the batch gives up
 
 
 def import_ray() -> Any:
@@ -43,13 +45,33 @@ def import_ray() -> Any:
     return ray
 
 
-def _task(function: JobFunction, job: Job, out_dir: Path, options: JobOptions) -> JobResult:
-    """The body of every Ray task: the job function, its exceptions turned into results."""
-    return execute(function, job, out_dir, options)
+class JobWorker:
+    """The body of every worker actor: runs job functions, their exceptions turned into results."""
+
+    def ready(self) -> bool:
+        """Answered once the actor's process is up."""
+        return True
+
+    def run(self, function: JobFunction, job: Job, out_dir: Path, options: JobOptions) -> JobResult:
+        """Run one job."""
+        return execute(function, job, out_dir, options)
+
+
+@dataclass
+class _Slots:
+    """The worker actors by state: starting (keyed by their ready() ref), idle, or busy (keyed by
+    their run() ref, with the job and the time it started)."""
+
+    starting: dict[Any, Any] = field(default_factory=dict)
+    idle: list[Any] = field(default_factory=list)
+    busy: dict[Any, tuple[Any, Job, float]] = field(default_factory=dict)
+
+    def count(self) -> int:
+        return len(self.starting) + len(self.idle) + len(self.busy)
 
 
 class RayEngine:
-    """Runs jobs as Ray tasks, at most ``workers`` at a time (see the module docstring)."""
+    """Runs jobs on Ray worker actors, at most ``workers`` at a time (see the module docstring)."""
 
     name = "ray"
 
@@ -77,7 +99,7 @@ class RayEngine:
         on_start: OnStart,
         on_done: OnDone,
     ) -> None:
-        """Run ``jobs`` as Ray tasks; connect first and disconnect afterwards."""
+        """Run ``jobs`` on Ray workers; connect first and disconnect afterwards."""
         ray = import_ray()
         owned = self._connect(ray)
         try:
@@ -98,9 +120,8 @@ class RayEngine:
         try:
             ray.init(**kwargs)
         except (ConnectionError, RuntimeError, ValueError, TimeoutError) as err:
-            first = str(err).strip().splitlines()[0] if str(err).strip() else type(err).__name__
             raise InputError(
-                f"cannot start or reach Ray at {self.address!r}: {first}",
+                f"cannot start or reach Ray at {self.address!r}: {_first_line(err)}",
                 where="--ray",
                 fix=ADDRESS_FIX,
             ) from None
@@ -115,54 +136,101 @@ class RayEngine:
         on_start: OnStart,
         on_done: OnDone,
     ) -> None:
-        remote = ray.remote(num_cpus=1, max_retries=0)(_task)
+        actor_class = ray.remote(num_cpus=1, max_restarts=0, max_task_retries=0)(JobWorker)
         pending = list(reversed(jobs))
-        inflight: dict[Any, tuple[Job, float]] = {}
-        while pending or inflight:
-            while pending and len(inflight) < self.workers:
-                job = pending.pop()
-                ref = remote.remote(self.function, job, out_dir, options)
-                inflight[ref] = (job, time.monotonic())
-                on_start(job)
-            deadline = min(started for _, started in inflight.values()) + self.timeout_s
-            ready, _ = ray.wait(
-                list(inflight), num_returns=1, timeout=max(0.0, deadline - time.monotonic())
-            )
-            for ref in ready:
-                job, started = inflight.pop(ref)
-                on_done(self._result(ray, ref, job, started, out_dir))
-            now = time.monotonic()
-            for ref, (job, started) in list(inflight.items()):
-                if now - started >= self.timeout_s:
-                    del inflight[ref]
-                    self._cancel(ray, ref)
-                    clean_partial(out_dir, job)
-                    on_done(failed_result(job, timeout_message(self.timeout_s), now - started))
+        slots = _Slots()
+        start_failures = 0
+        try:
+            while pending or slots.busy:
+                while slots.count() < min(self.workers, len(pending) + len(slots.busy)):
+                    actor = actor_class.remote()
+                    slots.starting[actor.ready.remote()] = actor
+                while pending and slots.idle:
+                    job = pending.pop()
+                    actor = slots.idle.pop()
+                    ref = actor.run.remote(self.function, job, out_dir, options)
+                    slots.busy[ref] = (actor, job, time.monotonic())
+                    on_start(job)
+                timeout = None
+                if slots.busy:
+                    first = min(started for _, _, started in slots.busy.values())
+                    timeout = max(0.0, first + self.timeout_s - time.monotonic())
+                ready, _ = ray.wait([*slots.starting, *slots.busy], num_returns=1, timeout=timeout)
+                for ref in ready:
+                    if ref in slots.starting:
+                        start_failures = self._started(ray, ref, slots, start_failures)
+                    else:
+                        actor, job, started = slots.busy.pop(ref)
+                        on_done(self._result(ray, ref, actor, job, started, out_dir, slots))
+                self._time_out(ray, slots, out_dir, on_done)
+        finally:
+            for actor in [*slots.starting.values(), *slots.idle]:
+                with contextlib.suppress(Exception):
+                    ray.kill(actor)
 
     @staticmethod
-    def _result(ray: Any, ref: Any, job: Job, started: float, out_dir: Path) -> JobResult:
-        """The task's result, or a failed result saying how Ray lost it."""
+    def _started(ray: Any, ref: Any, slots: _Slots, failures: int) -> int:
+        """Move a started actor to the idle slots; count (and past a limit, report) failures."""
+        from ray import exceptions
+
+        actor = slots.starting.pop(ref)
+        try:
+            ray.get(ref)
+        except exceptions.RayError as err:
+            if failures + 1 >= MAX_START_FAILURES:
+                raise RuntimeError(f"Ray workers fail to start: {_first_line(err)}") from None
+            return failures + 1
+        slots.idle.append(actor)
+        return 0
+
+    @staticmethod
+    def _result(
+        ray: Any,
+        ref: Any,
+        actor: Any,
+        job: Job,
+        started: float,
+        out_dir: Path,
+        slots: _Slots,
+    ) -> JobResult:
+        """The job's result (its actor back to idle), or a failed result saying how Ray lost it."""
         from ray import exceptions
 
         try:
             result = ray.get(ref)
-        except exceptions.WorkerCrashedError:
-            error = "worker process died (Ray WorkerCrashedError)"
+        except (exceptions.RayActorError, exceptions.WorkerCrashedError) as err:
+            error = f"worker process died (Ray {type(err).__name__})"
         except exceptions.RayError as err:
-            text = str(err).strip().splitlines()
-            error = f"Ray {type(err).__name__}: {text[0] if text else ''}".strip()
+            error = f"Ray {type(err).__name__}: {_first_line(err)}".strip()
         else:
+            slots.idle.append(actor)
             if isinstance(result, JobResult):
                 return result
             error = f"unexpected task result {type(result).__name__}"
         clean_partial(out_dir, job)
         return failed_result(job, error, time.monotonic() - started)
 
-    @staticmethod
-    def _cancel(ray: Any, ref: Any) -> None:
-        """Kill the task's worker and wait (bounded) until Ray confirms it is gone."""
-        from ray import exceptions
+    def _time_out(self, ray: Any, slots: _Slots, out_dir: Path, on_done: OnDone) -> None:
+        """Kill the actors of jobs past their timeout and fail those jobs."""
+        now = time.monotonic()
+        for ref, (actor, job, started) in list(slots.busy.items()):
+            if now - started >= self.timeout_s:
+                del slots.busy[ref]
+                _kill(ray, actor, ref)
+                clean_partial(out_dir, job)
+                on_done(failed_result(job, timeout_message(self.timeout_s), now - started))
 
-        ray.cancel(ref, force=True)
-        with contextlib.suppress(exceptions.RayError):
-            ray.get(ref, timeout=CANCEL_WAIT_S)
+
+def _kill(ray: Any, actor: Any, ref: Any) -> None:
+    """Kill an actor and wait (bounded) until Ray confirms its running call is gone."""
+    from ray import exceptions
+
+    ray.kill(actor, no_restart=True)
+    with contextlib.suppress(exceptions.RayError):
+        ray.get(ref, timeout=CANCEL_WAIT_S)
+
+
+def _first_line(err: BaseException) -> str:
+    """The first line of an exception's message, else its type's name."""
+    text = str(err).strip()
+    return text.splitlines()[0] if text else type(err).__name__

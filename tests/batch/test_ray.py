@@ -64,6 +64,8 @@ def test_same_seeds_give_byte_identical_scenes_on_both_engines(
 
 @pytest.mark.slow
 def test_a_crashed_or_timed_out_task_fails_only_its_job(tmp_path: Path) -> None:
+    # The timeout counts from when a job starts on a running worker: a slow worker start-up on a
+    # loaded machine (CI once took over 8 s) must not time out quick jobs.
     # Ship the fake job functions by value: the Ray workers need not import the tests package.
     ray.cloudpickle.register_pickle_by_value(fake_jobs)
     try:
@@ -78,7 +80,7 @@ def test_a_crashed_or_timed_out_task_fails_only_its_job(tmp_path: Path) -> None:
         ray.cloudpickle.unregister_pickle_by_value(fake_jobs)
     by_input = {r.input: r for r in outcome.results}
     assert by_input["ok a"].status == by_input["ok b"].status == "ok"
-    assert by_input["crash"].error == "worker process died (Ray WorkerCrashedError)"
+    assert by_input["crash"].error == "worker process died (Ray ActorDiedError)"
     assert by_input["hang"].error.startswith("timed out after 8 s")
     assert by_input["raise"].error.startswith("internal error ValueError: boom")
     assert not (tmp_path / "runs" / jobs[1].id).exists()  # the crash's half-done folder

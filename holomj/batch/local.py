@@ -5,6 +5,10 @@ the text model (~10 s on a 2-core machine) for every job, while a scene takes ~1
 ``scripts/bench_batch.py`` (``max_jobs_per_worker=1`` is the fresh-process mode, kept for
 comparison and for jobs that must not share a process).
 
+A job's timeout counts from when its worker says it has begun the job, so the start-up of a
+fresh worker (imports; slow on a loaded machine) does not count against it; a worker that has not
+begun within ``WORKER_START_LIMIT_S`` fails the job.
+
 Isolation is kept: the parent enforces each job's timeout by killing the worker's process group,
 and a worker that dies (segfault, ``os._exit``, out of memory) fails only the job it was running.
 Either way the slot starts a new worker for its next job and the job's leftovers are removed.
@@ -29,9 +33,10 @@ from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult, failed_result
 from holomj.batch.resume import clean_partial
 from holomj.batch.runner import JobFunction, run_job
-from holomj.batch.worker import worker_main
+from holomj.batch.worker import STARTED, worker_main
 
 STOP_GRACE_S = 5.0
+WORKER_START_LIMIT_S = 300.0  # a worker that has not begun its job by then fails it
 
 
 @dataclass
@@ -42,8 +47,15 @@ class _Slot:
     process: BaseProcess | None = None
     conn: Connection | None = None
     job: Job | None = None
-    started: float = 0.0
+    sent: float = 0.0  # when the job was handed over
+    started: float | None = None  # when the worker began it (its timeout counts from here)
     jobs_run: int = 0
+
+    def deadline(self, timeout_s: float) -> float:
+        """When the job times out, or (not begun yet) when its worker is too slow to start."""
+        if self.started is None:
+            return self.sent + WORKER_START_LIMIT_S
+        return self.started + timeout_s
 
 
 class LocalEngine:
@@ -110,7 +122,7 @@ class LocalEngine:
             self._stop(slot, graceful=False)
             self._start(slot).send(message)
         slot.job = job
-        slot.started = time.monotonic()
+        slot.sent, slot.started = time.monotonic(), None
 
     def _start(self, slot: _Slot) -> Connection:
         """Start a worker process for ``slot``; return the parent's end of its pipe."""
@@ -132,7 +144,7 @@ class LocalEngine:
         if not busy:
             return
         now = time.monotonic()
-        timeout = max(0.0, min(s.started + self.timeout_s for s in busy) - now)
+        timeout = max(0.0, min(s.deadline(self.timeout_s) for s in busy) - now)
         handles: list[object] = []
         for slot in busy:
             assert slot.conn is not None and slot.process is not None
@@ -144,13 +156,18 @@ class LocalEngine:
         job = slot.job
         if job is None or slot.conn is None or slot.process is None:
             return None
-        elapsed = time.monotonic() - slot.started
         result: JobResult | None = None
         try:
-            if slot.conn.poll():
-                result = slot.conn.recv()
+            while result is None and slot.conn.poll():
+                message = slot.conn.recv()
+                if message == STARTED:
+                    slot.started = time.monotonic()
+                else:
+                    result = message
         except (EOFError, OSError):
             result = None
+        now = time.monotonic()
+        elapsed = now - (slot.sent if slot.started is None else slot.started)
         if result is not None:
             slot.job = None
             slot.jobs_run += 1
@@ -160,7 +177,9 @@ class LocalEngine:
         if not slot.process.is_alive():
             slot.process.join()
             error = f"worker process died ({_exit_reason(slot.process.exitcode)})"
-        elif elapsed >= self.timeout_s:
+        elif slot.started is None and now >= slot.deadline(self.timeout_s):
+            error = f"worker process did not start within {WORKER_START_LIMIT_S:.0f} s"
+        elif slot.started is not None and now >= slot.deadline(self.timeout_s):
             error = timeout_message(self.timeout_s)
         else:
             return None

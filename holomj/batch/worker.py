@@ -21,6 +21,9 @@ from holomj.batch.runner import JobFunction, execute
 THREAD_VARIABLES = ("OMP_NUM_THREADS", "MKL_NUM_THREADS", "OPENBLAS_NUM_THREADS")
 
 
+STARTED = "started"  # sent when a job begins, before its result
+
+
 def worker_main(conn: Connection, parent_pid: int, function: JobFunction) -> None:
     """Serve ``(job, out_dir, options)`` messages until ``None`` or the pipe closes."""
     _die_with_parent(parent_pid)
@@ -36,6 +39,10 @@ def worker_main(conn: Connection, parent_pid: int, function: JobFunction) -> Non
         if message is None:
             return
         job, out_dir, options = message
+        try:
+            conn.send(STARTED)  # the job's timeout counts from here, not from the process start
+        except (BrokenPipeError, OSError):
+            return
         result = execute(function, job, out_dir, options)
         try:
             conn.send(result)

@@ -116,3 +116,11 @@ def test_missing_ray_names_the_extra(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setitem(sys.modules, "ray", None)
     with pytest.raises(InputError, match=r"holomj\[ray\]"):
         import_ray()
+
+
+def test_a_jobs_timeout_does_not_count_its_workers_start_up(tmp_path: Path) -> None:
+    # A spawned worker takes longer than 0.3 s to import holomj; the job itself is instant.
+    job = Job(id=job_id(1, "ok quick", 0), line=1, kind="prompt", input="ok quick", seed=0)
+    engine = LocalEngine(workers=1, timeout_s=0.3, function=fake_job)
+    outcome = run_batch([job], tmp_path / "runs", JobOptions(library=tmp_path), engine)
+    assert [r.status for r in outcome.results] == ["ok"], outcome.results[0].error

@@ -21,6 +21,7 @@ from holomj.plan.draft import (
     plural_name,
 )
 from holomj.plan.knowledge import ObjectKind, TemplateObject
+from holomj.plan.seating import seat_pairs
 
 
 def furnish(state: DraftPlan, room: DraftRoom) -> None:
@@ -124,14 +125,18 @@ def apply_capacity(state: DraftPlan) -> None:
     if not capacity:
         return
     room = next((r for r in state.rooms if any(o.seat for o in r.objects)), None)
-    if room is None:
+    if room is None and not _seat_the_table(state, capacity):
         state.note(f"seating for {capacity} was asked, but no room of this plan has seats")
+        return
+    if room is None:
         return
     seats = [o for o in room.objects if o.seat]
     seat = next((o for o in seats if o.per is not None), seats[0])
+    if seat.requested:  # the prompt's own count of seats stands
+        return
     anchor = room.get(seat.per) if seat.per is not None else None
     asked = f"seating for {capacity}"
-    if anchor is not None:
+    if anchor is not None and not anchor.requested:  # a table asked for stays one
         anchor.quantity = min(MAX_QUANTITY, max(1, math.ceil(capacity / max(1, seat.per_max))))
         anchor.requested = True
         anchor.asked = f"{asked}: {anchor.quantity} {plural_name(anchor.name, anchor.quantity)}"
@@ -139,6 +144,23 @@ def apply_capacity(state: DraftPlan) -> None:
     seat.requested = True
     seat.asked = f"{asked}: {seat.quantity} {plural_name(seat.name, seat.quantity)}"
     seat.per = None
+
+
+def _seat_the_table(state: DraftPlan, capacity: int) -> bool:
+    """``a dining table for two`` in a room without seats: the table's own seats, as many as
+    asked; False when no room has a table with seats of its own."""
+    for room in state.rooms:
+        for table in room.objects:
+            seats = seat_pairs(state.kb).get(table.name)
+            if not seats:
+                continue
+            kind = state.kb.objects[seats[0]]
+            seat = DraftObject(seats[0], kind, min(MAX_QUANTITY, capacity), variance="same")
+            seat.size, seat.seat, seat.requested = kind.size, True, True
+            seat.asked = f"seating for {capacity} at the {table.name}"
+            room.objects.append(seat)
+            return True
+    return False
 
 
 def apply_windows(state: DraftPlan) -> None:

@@ -26,6 +26,7 @@ from holomj.plan.furnish import draw_on_top
 from holomj.plan.knowledge import ObjectKind
 from holomj.plan.new_kinds import resolve_unknown
 from holomj.plan.prompt import ObjectRequest
+from holomj.plan.seating import is_seat_word, seat_for, seating_links, seating_table
 
 
 def apply_requests(state: DraftPlan) -> None:
@@ -42,6 +43,9 @@ def apply_requests(state: DraftPlan) -> None:
     put_on = {r.subject for r in parsed.relations if r.kind == "on"} | {
         r.target for r in parsed.relations if r.kind == "holds" and r.target is not None
     }
+    on_wall = {r.subject for r in parsed.relations if r.kind == "wall" and r.phrase[:3] == "on "}
+    seats = seating_links(state.kb, requests, parsed.relations)
+    tables = set(seats.values())
     for index, request in enumerate(requests):
         if request.excluded or request.quantity == 0:
             _exclude(state, request)
@@ -52,6 +56,15 @@ def apply_requests(state: DraftPlan) -> None:
             continue
         room = _request_room(state, request)
         name = _resolve_kind(state, request, room, index in put_on)
+        if index in on_wall:
+            _hang_flat_kind(state, name)
+        if request.generic and index in tables:  # "a table with four chairs": a seating table
+            name = seating_table(state.kb, request.kind, _present(room)) or name
+        elif index in seats:  # "six chairs around the table": the seat that goes with it
+            table = _table_kind(state, requests[seats[index]], room)
+            name = seat_for(state.kb, request.kind, table, _present(room)) or name
+        elif is_seat_word(state.kb, request) and room.get(name) is None:
+            name = _seat_at_room_table(state, request, room) or name
         kind = state.object_kind(name)
         quantity = _quantity(request, kind, room)
         if kind.placement == "object":
@@ -132,6 +145,45 @@ def _resolve_kind(
     return kinds[0]
 
 
+FLAT_M = 0.05  # a small object this thin (a chart, a map, a print) can hang on a wall
+
+
+def _hang_flat_kind(state: DraftPlan, name: str) -> None:
+    """A flat small kind asked for "on the wall" (a star chart) becomes a wall object of the same
+    category for this plan: its top face turned to face the room."""
+    kind = state.object_kind(name)
+    if kind.placement != "object" or kind.size is None or kind.size[2] > FLAT_M:
+        return
+    width, depth, height = kind.size
+    state.new_kinds[name] = kind.model_copy(
+        update={"placement": "wall", "size": (width, height, depth), "receptacle": False}
+    )
+    state.note(f"the {name} asked for on the wall hangs there (a wall object)")
+
+
+def _present(room: DraftRoom) -> list[str]:
+    """The room's kinds in order of preference: those it has, then its template's."""
+    return [o.name for o in room.objects] + room.template.kinds()
+
+
+def _seat_at_room_table(state: DraftPlan, request: ObjectRequest, room: DraftRoom) -> str | None:
+    """For seats the room does not have yet: the seat that goes with a table it has."""
+    for obj in room.objects:
+        seat = seat_for(state.kb, request.kind, obj.name, _present(room))
+        if seat is not None:
+            return seat
+    return None
+
+
+def _table_kind(state: DraftPlan, table: ObjectRequest, room: DraftRoom) -> str:
+    """The kind a table request means, as seats around it see it (resolved the same way as the
+    table itself, whichever of the two the prompt names first)."""
+    if not table.generic:
+        return table.kind
+    chosen = seating_table(state.kb, table.kind, _present(room))
+    return chosen or _resolve_kind(state, table, room)
+
+
 def _exclude(state: DraftPlan, request: ObjectRequest) -> None:
     kinds = state.kb.generics[request.kind].kinds if request.generic else [request.kind]
     removed = 0
@@ -209,8 +261,13 @@ def _add_small(
     holders = sorted(
         (o for o in room.objects if o.floor and weight(o) > 0), key=lambda o: -weight(o)
     )
+    if not holders:  # no receptacle lists it: the room's roomiest receptacle top holds it
+        holders = sorted(
+            (o for o in room.objects if o.floor and kb.is_receptacle(o.kind.category)),
+            key=lambda o: -o.footprint,
+        )[:1]
     if not holders:
-        holder_kind = _receptacle_for(state, room, like)
+        holder_kind = _receptacle_for(state, room, like) or _any_receptacle(state, room)
         if holder_kind is None:
             state.note(
                 f"no receptacle in the knowledge base holds {plural_name(name, 2)}; left out"
@@ -244,6 +301,25 @@ def _add_small(
             f"asked for {quantity} {plural_name(name, quantity)}; {max(placed, 0)} fit on the "
             f"receptacles of the {room.template.name} (at most {cap} on each)"
         )
+
+
+def _any_receptacle(state: DraftPlan, room: DraftRoom) -> str | None:
+    """The floor receptacle kind that belongs in this room with the largest top (a counter in
+    a kitchen, a table in a dining room), else a side table: something to put things on."""
+    kb = state.kb
+    kinds = [
+        k
+        for k in kb.kinds_in_room(room.template_id, "floor")
+        if kb.is_receptacle(kb.objects[k].category)
+    ]
+    if not kinds:
+        return "side table" if "side table" in kb.objects else None
+
+    def top(name: str) -> float:
+        width, depth, _ = kb.objects[name].size or (0.0, 0.0, 0.0)
+        return width * depth
+
+    return max(kinds, key=top)
 
 
 def _receptacle_for(state: DraftPlan, room: DraftRoom, category: str) -> str | None:

@@ -85,8 +85,8 @@ def plan_offline(prompt: str, seed: int, *, encoder: TextEncoder | None = None) 
     for room in state.rooms:
         pick_materials(state, room)
         furnish(state, room)
-    apply_capacity(state)
     apply_requests(state)
+    apply_capacity(state)
     apply_relations(state)
     apply_windows(state)
     for room in state.rooms:

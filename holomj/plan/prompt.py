@@ -89,6 +89,13 @@ class RoomMention(FrozenModel):
     dims: tuple[float, float] | None = None
     area_m2: float | None = None
     excluded: bool = False
+    zone: bool = Field(
+        default=False, description="Named as a part of a room: 'a reading corner', 'a play area'."
+    )
+    location: bool = Field(
+        default=False,
+        description="Where the scene itself is: 'a home gym in the garage' (not another room).",
+    )
     phrase: str
 
 
@@ -190,10 +197,14 @@ def _read_mentions(
     neg_scopes = negation_scopes(reader.words)
     context: str | None = None  # template of the room whose "with ..." list this is
     last_end = 0
+    head: Mention | None = None  # the first room or scene named: what the prompt is about
     for mention in reader.mentions:
         if any(w in {".", ";", "!", "?"} for w in reader.words[last_end : mention.start]):
             context = None  # a new sentence
+        located = head is not None and _located_in(reader, head, mention)
         last_end = mention.end
+        if head is None and (mention is scene or mention.meaning("room") is not None):
+            head = mention
         if mention is scene:
             context = None
             continue
@@ -211,6 +222,8 @@ def _read_mentions(
                     count=0 if excluded else (mods.count if mods.counted else None),
                     size_word=mods.size_word,
                     excluded=excluded,
+                    zone=reader.words[mention.end - 1] in ZONE_WORDS,
+                    location=located,
                     phrase=phrase,
                     **sizes.pop(mention.start, {}),  # type: ignore[arg-type]
                 )
@@ -222,7 +235,7 @@ def _read_mentions(
                 ObjectRequest(
                     kind=thing.key,
                     generic=thing.kind == "generic",
-                    quantity=_per_each(reader, mods.start, mods.count, found.objects),
+                    quantity=_per_each(reader, mods.start, mention.end, mods.count, found.objects),
                     many=mods.many,
                     plural=thing.plural,
                     size=_size_class(mods.size_word, reader.index),
@@ -249,12 +262,28 @@ def _read_mentions(
     return found
 
 
+# The last word of a room phrase that names a part of a room rather than a room.
+ZONE_WORDS = frozenset({"corner", "nook", "area", "zone", "space", "station"})
+LOCATION_WORDS = (("in", "the"), ("in", "a"), ("in", "an"), ("inside", "the"), ("inside", "a"))
+
+
+def _located_in(reader: Reader, head: Mention, mention: Mention) -> bool:
+    """Whether ``mention`` says where the head is: "a home gym in the garage" (the words between
+    are only ``in the``)."""
+    between = tuple(reader.words[head.end : mention.start])
+    return between in LOCATION_WORDS
+
+
 def _per_each(
-    reader: Reader, start: int, count: int | None, before: list[ObjectRequest]
+    reader: Reader, start: int, end: int, count: int | None, before: list[ObjectRequest]
 ) -> int | None:
-    """``eight tables, each with four chairs``: four per table, 32 chairs."""
+    """``eight tables, each with four chairs`` or ``eight tables with four chairs each``: four
+    per table, 32 chairs."""
     lead = [w for w in reader.words[max(start - 3, 0) : start] if w != ","]
-    if lead[-2:] not in (["each", "with"], ["each", "having"]) or not before:
+    each_with = lead[-2:] in (["each", "with"], ["each", "having"])
+    with_each = bool(lead) and lead[-1] in {"with", "having"} and end < len(reader.words)
+    with_each = with_each and reader.words[end] in {"each", "apiece", "per"}
+    if not (each_with or with_each) or not before:
         return count
     per = before[-1].quantity
     if per is None or before[-1].excluded:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from holomj.plan.draft import DraftPlan, DraftRoom
 from holomj.plan.knowledge import RoomTemplate, SceneType
+from holomj.plan.prompt import RoomMention
 
 WALL_HEIGHT_LIMITS = (2.4, 4.0)
 
@@ -36,15 +37,16 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
     # A prompt that lists its rooms ("a house with a kitchen, a dining room, a living room and
     # a bedroom") gets those rooms: each listed room once unless counted, the others of the
     # scene type only at their minimum ("a bedroom" is one bedroom, not three).
-    listed = len({m.template for m in parsed.rooms if not m.excluded}) >= LISTED_ROOMS
+    mentions = [m for m in parsed.rooms if not _part_of_a_room(state, scene, counts, m)]
+    listed = len({m.template for m in mentions if not m.excluded}) >= LISTED_ROOMS
     if listed:
-        named = {m.template for m in parsed.rooms}
+        named = {m.template for m in mentions}
         for entry in scene.rooms:
             template = kb.rooms[entry.template]
             if entry.template not in named and template.counts_as not in named:
                 counts[entry.id] = entry.count[0] if entry.probability >= 1.0 else 0
     extra: dict[str, int] = {}  # template -> count, for rooms the scene type does not have
-    for mention in parsed.rooms:
+    for mention in mentions:
         template = mention.template
         direct = [e for e in scene.rooms if e.template == template]
         counted = [e for e in scene.rooms if kb.rooms[e.template].counts_as == template]
@@ -76,6 +78,55 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
         counts[first.id] = 1
         state.note(f"no room was left; planned one {kb.rooms[first.template].name}")
     _build_rooms(state, scene, counts, extra)
+
+
+def _part_of_a_room(
+    state: DraftPlan, scene: SceneType, counts: dict[str, int], mention: RoomMention
+) -> bool:
+    """Whether a room mention is no room of its own (noted): where the scene is ("a home gym in
+    the garage"), or, for a room the scene type lacks, a part of one of its rooms ("a reading
+    corner" in a daycare; "a small kitchen" in a studio, whose room has the kitchen's defining
+    furniture already)."""
+    kb = state.kb
+    name = kb.rooms[mention.template].name
+    if mention.location:
+        state.note(f"'{mention.phrase}' says where the {scene.name} is; planned no {name} besides")
+        return True
+    if mention.excluded or mention.count is not None:
+        return False
+    if any(
+        e.template == mention.template or kb.rooms[e.template].counts_as == mention.template
+        for e in scene.rooms
+        if counts.get(e.id)
+    ):
+        return False
+    defining = set(kb.rooms[mention.template].defining)
+    for entry in scene.rooms:
+        host = kb.rooms[entry.template]
+        inside = defining <= set(host.kinds()) and _open_plan(state, host)
+        if counts.get(entry.id) and (mention.zone or inside):
+            state.note(f"planned '{mention.phrase}' as part of the {host.name}")
+            return True
+    return False
+
+
+# The rooms of a home by function: a room template with the defining furniture of two of these
+# besides its own is open plan.
+HOME_FUNCTIONS = ("bedroom", "kitchen", "living_room", "dining_room", "bathroom")
+
+
+def _open_plan(state: DraftPlan, host: RoomTemplate) -> bool:
+    """Whether a room template serves as rooms of two or more other types (a studio: bedroom,
+    kitchen and living room), so that one of those named in a prompt is an area of it."""
+    kinds = set(host.kinds())
+    served = [
+        name
+        for name in HOME_FUNCTIONS
+        if name in state.kb.rooms
+        and state.kb.rooms[name].type != host.type
+        and set(state.kb.rooms[name].defining) <= kinds
+    ]
+    return len(served) >= 2
 
 
 def _main_room_alone(state: DraftPlan, scene: SceneType, counts: dict[str, int]) -> None:

@@ -50,8 +50,11 @@ def _single_room_scene(state: DraftPlan) -> tuple[str, str] | None:
     ("a veterinary exam room with ..."): the scene type with the fewest rooms that has that
     room, to be planned with that room alone; else None."""
     kb = state.kb
-    wanted = {r.template for r in state.parsed.rooms if not r.excluded}
-    counts = [r.count for r in state.parsed.rooms if not r.excluded]
+    rooms = [r for r in state.parsed.rooms if not r.excluded and not r.location]
+    if any(not r.zone for r in rooms):  # "a daycare room with a reading corner": the daycare
+        rooms = [r for r in rooms if not r.zone]
+    wanted = {r.template for r in rooms}
+    counts = [r.count for r in rooms]
     if len(wanted) != 1 or any(c is not None and c > 1 for c in counts):
         return None
     (template,) = wanted

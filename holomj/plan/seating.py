@@ -1,0 +1,86 @@
+"""Seats that go with a table: which chair kind "six chairs around the table" means.
+
+The room templates say which seats go with which table (``per`` and ``seat`` in rooms.json:
+dining chairs per dining table, school chairs per student desk, bar stools per bar table...).
+A generic seat word (``chairs``) that the prompt puts around or at a table, or that a table is
+asked "with", becomes the seat kind paired with that table's kind; a generic ``table`` that seats
+gather around becomes a table kind that has paired seats (preferring the room's own). Without such
+a link the room's usual kind is kept (:func:`holomj.plan.object_requests.apply_requests`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.prompt import ObjectRequest
+from holomj.plan.prompt_relations import RelationRequest
+
+# Relations by which a seat is linked to a table: subject seat, target table (``holds``: the
+# other way round, "a table with four chairs").
+SEAT_RELATIONS = frozenset({"around", "adjacent_to", "near", "in_front_of", "facing"})
+
+
+def seat_pairs(kb: KnowledgeBase) -> dict[str, tuple[str, ...]]:
+    """Table kind -> the seat kinds the templates put per instance of it (in template order)."""
+    pairs: dict[str, list[str]] = {}
+    for template in kb.rooms.values():
+        for _, objects, _ in template.object_sets():
+            for obj in objects:
+                if obj.per is not None and obj.seat:
+                    seats = pairs.setdefault(obj.per, [])
+                    if obj.object not in seats:
+                        seats.append(obj.object)
+    return {table: tuple(seats) for table, seats in pairs.items()}
+
+
+def seat_kinds(kb: KnowledgeBase) -> frozenset[str]:
+    """Every kind a template counts as a seat next to a table."""
+    return frozenset(seat for seats in seat_pairs(kb).values() for seat in seats)
+
+
+def is_seat_word(kb: KnowledgeBase, request: ObjectRequest) -> bool:
+    """Whether a generic request (``chairs``, ``seats``) may mean a seat that goes with a table."""
+    if not request.generic:
+        return False
+    return any(kind in seat_kinds(kb) for kind in kb.generics[request.kind].kinds)
+
+
+def seating_links(
+    kb: KnowledgeBase, objects: Sequence[ObjectRequest], relations: Sequence[RelationRequest]
+) -> dict[int, int]:
+    """Seat request index -> the index of the table request it goes with."""
+    links: dict[int, int] = {}
+    for rel in relations:
+        if rel.target is None:
+            continue
+        seat, table = (
+            (rel.target, rel.subject) if rel.kind == "holds" else (rel.subject, rel.target)
+        )
+        if rel.kind != "holds" and rel.kind not in SEAT_RELATIONS:
+            continue
+        if is_seat_word(kb, objects[seat]) and seat not in links:
+            links[seat] = table
+    return links
+
+
+def seating_table(kb: KnowledgeBase, generic: str, present: Sequence[str]) -> str | None:
+    """The kind a generic table word means when seats go around it: a kind of the generic with
+    paired seats, the first of ``present`` (the room's own kinds, in order of preference) that
+    is one, else the generic's first such kind; None when it has none."""
+    pairs = seat_pairs(kb)
+    candidates = [k for k in kb.generics[generic].kinds if k in pairs]
+    for kind in present:
+        if kind in candidates:
+            return kind
+    return candidates[0] if candidates else None
+
+
+def seat_for(kb: KnowledgeBase, generic: str, table: str, present: Sequence[str]) -> str | None:
+    """The kind a generic seat word means at ``table``: a seat paired with the table that the
+    generic may mean, the first of ``present`` that is one, else the first; None when none."""
+    paired = [k for k in seat_pairs(kb).get(table, ()) if k in kb.generics[generic].kinds]
+    for kind in present:
+        if kind in paired:
+            return kind
+    return paired[0] if paired else None

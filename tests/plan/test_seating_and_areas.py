@@ -1,0 +1,125 @@
+"""Seats that go with their table, areas of a room that are no rooms, things put on the wall or
+on a counter (holomj.plan.seating, object_requests, rooms, furnish)."""
+
+from __future__ import annotations
+
+import pytest
+
+from holomj.plan.knowledge import knowledge_base
+from holomj.plan.offline import plan_offline
+from holomj.plan.prompt import parse_prompt
+from holomj.plan.seating import seat_for, seat_pairs, seating_table
+from holomj.spec.plan import ScenePlan
+
+
+def _counts(plan: ScenePlan) -> dict[str, int]:
+    out: dict[str, int] = {}
+    for room in plan.rooms:
+        for obj in room.objects:
+            out[obj.name] = out.get(obj.name, 0) + obj.quantity
+    return out
+
+
+def _small(plan: ScenePlan) -> dict[str, int]:
+    out: dict[str, int] = {}
+    for room in plan.rooms:
+        for obj in room.objects:
+            for item in obj.on_top:
+                out[item.name] = out.get(item.name, 0) + item.quantity * obj.quantity
+    return out
+
+
+def test_the_templates_pair_seats_with_their_tables() -> None:
+    kb = knowledge_base()
+    pairs = seat_pairs(kb)
+    assert "dining chair" in pairs["dining table"]
+    assert seating_table(kb, "table", ["coffee table", "side table"]) == "dining table"
+    assert seating_table(kb, "table", ["cafe table"]) == "cafe table"
+    assert seat_for(kb, "chair", "dining table", []) == "dining chair"
+    assert seat_for(kb, "chair", "coffee table", []) is None
+
+
+def test_chairs_around_a_table_are_the_tables_own_seats_not_the_rooms_armchairs() -> None:
+    plan = plan_offline(
+        "A reading room with four tall bookshelves against the walls, a large table in the "
+        "middle and six chairs around it.",
+        0,
+    )
+    counts = _counts(plan)
+    assert counts.get("dining chair") == 6
+    assert counts.get("dining table") == 1
+    assert counts.get("armchair", 0) != 6
+
+
+def test_a_small_table_with_four_chairs_gets_the_chairs_of_that_table() -> None:
+    counts = _counts(plan_offline("A playroom with a small table with four chairs.", 0))
+    assert counts.get("cafe table") == 1 and counts.get("cafe chair") == 4
+
+
+@pytest.mark.parametrize(
+    ("text", "chairs"),
+    [
+        ("A bakery with three small tables with two chairs each.", 6),
+        ("A library with four long study tables with four chairs each.", 16),
+        ("A cafe with five tables, each with two chairs.", 10),
+    ],
+)
+def test_chairs_each_multiply_by_the_tables(text: str, chairs: int) -> None:
+    parsed = parse_prompt(text, knowledge_base())
+    assert [o.quantity for o in parsed.objects if o.kind == "chair"] == [chairs]
+
+
+def test_a_table_for_two_gets_two_seats_and_a_table_for_four_stays_one_table() -> None:
+    counts = _counts(plan_offline("A studio apartment with a bed and a dining table for two.", 0))
+    assert counts.get("dining table") == 1 and counts.get("dining chair") == 2
+    counts = _counts(plan_offline("A kitchen with a table for four.", 0))
+    assert counts.get("dining table") == 1 and counts.get("dining chair") == 4
+
+
+def test_a_corner_or_an_area_of_a_room_is_no_room_of_its_own() -> None:
+    plan = plan_offline(
+        "A daycare room with six small tables, a reading corner with a rug and beanbags, "
+        "and a changing table.",
+        0,
+    )
+    assert len(plan.rooms) == 1
+    assert any("as part of" in note for note in plan.notes)
+    assert _counts(plan).get("rug") == 1
+
+
+def test_where_the_scene_is_adds_no_room() -> None:
+    plan = plan_offline("A home gym in the garage with a squat rack and a rowing machine.", 0)
+    assert len(plan.rooms) == 1
+    assert any("says where" in note for note in plan.notes)
+
+
+def test_a_kitchen_in_a_studio_is_its_kitchen_area_but_a_flats_rooms_stay_rooms() -> None:
+    studio = plan_offline("A studio apartment with a bed, a sofa and a small kitchen.", 0)
+    assert not any(r.id.startswith("kitchen") for r in studio.rooms)
+    assert _counts(studio).get("stove", 0) >= 1
+    flat = plan_offline(
+        "A two-bedroom flat with a kitchen, the second bedroom is a home office with a desk.", 0
+    )
+    assert sum(r.id.startswith("kitchen") for r in flat.rooms) == 1
+    assert any(r.id == "home_office" for r in flat.rooms)
+
+
+@pytest.mark.parametrize(
+    ("text", "small"),
+    [
+        ("A kitchen with a fridge, a cooker, a sink and a microwave.", "microwave"),
+        ("A cafe with a counter with an espresso machine on it.", "coffee machine"),
+    ],
+)
+def test_a_small_thing_no_receptacle_lists_still_gets_a_place(text: str, small: str) -> None:
+    plan = plan_offline(text, 0)
+    assert _small(plan).get(small, 0) >= 1, plan.notes
+    assert not any("left out" in note for note in plan.notes)
+
+
+def test_a_flat_thing_on_the_wall_hangs_there() -> None:
+    plan = plan_offline("An observatory with a telescope and a star chart on the wall.", 0)
+    charts = [o for r in plan.rooms for o in r.objects if o.name == "star chart"]
+    assert len(charts) == 1 and charts[0].placement == "wall"
+    _width, depth, height = charts[0].size or (0, 0, 0)
+    assert depth < 0.05 < height

@@ -19,6 +19,7 @@ from holomj.plan.draft import (
     DraftRoom,
     DraftSmall,
     plural_name,
+    remove_object,
 )
 from holomj.plan.knowledge import ObjectKind, TemplateObject
 from holomj.plan.seating import seat_pairs
@@ -179,3 +180,37 @@ def apply_windows(state: DraftPlan) -> None:
     main.windows = min(windows, 12)
     if windows > 12:
         state.note(f"asked for {windows} windows; planned 12 in the {main.template.name}")
+
+
+WINDOW_DRESSINGS = frozenset({"curtains", "blinds"})
+MAX_WINDOWS = 12
+
+
+def apply_window_dressings(state: DraftPlan) -> None:
+    """Curtains and blinds asked for dress the room's windows: one per window unless the prompt
+    counts them; a room with fewer windows than dressings gets windows added (not when the
+    prompt wants no windows: then the dressings are left out, noted)."""
+    counted = {
+        state.request_homes[i][:2]: request.quantity
+        for i, request in enumerate(state.parsed.objects)
+        if i in state.request_homes and request.quantity is not None
+    }
+    for room in state.rooms:
+        for obj in list(room.objects):
+            if obj.kind.category not in WINDOW_DRESSINGS:
+                continue
+            if state.parsed.windows == 0:
+                remove_object(room, obj)
+                state.note(f"left out the {obj.name} of the {room.template.name}: no windows asked")
+                continue
+            wanted = counted.get((room.id, obj.name))
+            default = 1 if room.windows is None else max(1, room.windows)
+            obj.quantity = min(MAX_WINDOWS, wanted if wanted is not None else default)
+            if room.windows is None and obj.quantity == 1:
+                continue  # the room type's default windows (one at least, on an outside wall)
+            if room.windows is None or room.windows < obj.quantity:
+                state.note(
+                    f"gave the {room.template.name} {obj.quantity} window(s) for the {obj.name} "
+                    f"asked for (it had {room.windows or 'the default'})"
+                )
+                room.windows = obj.quantity

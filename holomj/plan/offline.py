@@ -41,7 +41,7 @@ from holomj.errors import InputError
 from holomj.plan.constraints_text import constraint_lines
 from holomj.plan.draft import MAX_QUANTITY, DraftObject, DraftPlan, DraftRoom
 from holomj.plan.fit import ESSENTIAL, fit_room
-from holomj.plan.furnish import apply_capacity, apply_windows, furnish
+from holomj.plan.furnish import apply_capacity, apply_window_dressings, apply_windows, furnish
 from holomj.plan.knowledge import knowledge_base
 from holomj.plan.object_requests import apply_requests
 from holomj.plan.prompt import parse_prompt
@@ -89,6 +89,7 @@ def plan_offline(prompt: str, seed: int, *, encoder: TextEncoder | None = None) 
     apply_capacity(state)
     apply_relations(state)
     apply_windows(state)
+    apply_window_dressings(state)
     for room in state.rooms:
         fit_room(state, room)
     entrance = entrance_room(state, scene)

@@ -123,3 +123,17 @@ def test_a_flat_thing_on_the_wall_hangs_there() -> None:
     assert len(charts) == 1 and charts[0].placement == "wall"
     _width, depth, height = charts[0].size or (0, 0, 0)
     assert depth < 0.05 < height
+
+
+def test_curtains_dress_each_window_once_and_a_count_brings_its_windows() -> None:
+    def dressings(text: str) -> tuple[int, int | None]:
+        plan = plan_offline(text, 0)
+        room = plan.rooms[0]
+        count = sum(o.quantity for o in room.objects if o.category in {"curtains", "blinds"})
+        return count, room.windows.count
+
+    assert dressings("A living room with two windows and curtains on every window.") == (2, 2)
+    assert dressings("A bedroom with three curtains.") == (3, 3)
+    assert dressings("An office with blinds.")[0] == 1
+    count, windows = dressings("A bedroom with curtains and no windows.")
+    assert (count, windows) == (0, 0)

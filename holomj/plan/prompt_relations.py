@@ -180,24 +180,61 @@ def read_relations(
     blocked = {i for a, b in stops for i in range(a, b)}
     out: list[RelationRequest] = []
     for n, (_, end) in enumerate(objects):
-        found = _relation_after(words, end, starts, ends, blocked)
+        out.extend(_relations_of(n, end, words, objects, starts, ends, blocked))
+    return out
+
+
+MAX_CHAIN = 3  # relations read one after another: "in a row facing a long mirror"
+
+
+def _relations_of(
+    n: int,
+    end: int,
+    words: Sequence[str],
+    objects: Sequence[tuple[int, int]],
+    starts: dict[int, int],
+    ends: dict[int, int],
+    blocked: set[int],
+) -> list[RelationRequest]:
+    """The relations after object ``n``'s phrase: one after another while each names a place
+    ("in the corner by the window"); one naming an object ends the chain, since what follows
+    that object is its own."""
+    out: list[RelationRequest] = []
+    at = end
+    for _ in range(MAX_CHAIN):
+        found = _relation_after(words, at, starts, ends, blocked)
         if found is None:
-            continue
+            break
         family, target_at, place, stop = found
-        phrase = " ".join(w for w in words[end:stop] if w != ",")
+        phrase = " ".join(w for w in words[at:stop] if w != ",")
+        at = stop
         if place is not None:
             kind = _KIND.get((family, place))
             if kind is not None:
                 out.append(RelationRequest(subject=n, kind=kind, phrase=phrase))  # type: ignore[arg-type]
             continue
-        target = starts.get(target_at) if target_at is not None else _previous(n, objects, words)
-        if family == "sides_of_previous":
-            family, target = "sides", _previous(n, objects, words)
-        kind = _KIND.get((family, "object"))
-        if kind is None or target is None or target == n:
-            continue
-        out.append(RelationRequest(subject=n, kind=kind, target=target, phrase=phrase))  # type: ignore[arg-type]
+        out.extend(_object_relation(n, family, target_at, phrase, words, objects, starts))
+        break
     return out
+
+
+def _object_relation(
+    n: int,
+    family: str,
+    target_at: int | None,
+    phrase: str,
+    words: Sequence[str],
+    objects: Sequence[tuple[int, int]],
+    starts: dict[int, int],
+) -> list[RelationRequest]:
+    """The relation of object ``n`` to the object at ``target_at`` (else the one before it)."""
+    target = starts.get(target_at) if target_at is not None else _previous(n, objects, words)
+    if family == "sides_of_previous":
+        family, target = "sides", _previous(n, objects, words)
+    kind = _KIND.get((family, "object"))
+    if kind is None or target is None or target == n:
+        return []
+    return [RelationRequest(subject=n, kind=kind, target=target, phrase=phrase)]  # type: ignore[arg-type]
 
 
 def _relation_after(

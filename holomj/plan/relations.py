@@ -26,7 +26,14 @@ Anything else is noted and left out of the layout: relations across rooms, an ob
 
 from __future__ import annotations
 
-from holomj.plan.draft import MAX_QUANTITY, DraftObject, DraftPlan, DraftRoom, DraftSmall
+from holomj.plan.draft import (
+    MAX_QUANTITY,
+    DraftObject,
+    DraftPlan,
+    DraftRoom,
+    DraftSmall,
+    plural_name,
+)
 from holomj.plan.prompt_relations import RelationRequest
 from holomj.spec.plan import PlanRelation
 
@@ -180,6 +187,10 @@ def _object_relation(
         looker, hung = (obj, other) if obj.floor else (other, obj)
         if hung.above is None:
             hung.faced_by = looker.name
+            if phrase.split()[:1] == ["each"] and hung.quantity < looker.quantity:
+                # "three salon chairs, each facing a mirror": a mirror for each chair
+                state.note(f"'{name} {phrase}': {looker.quantity} {plural_name(hung.name, 2)}")
+                hung.quantity = min(looker.quantity, MAX_QUANTITY)
             _add(room, PlanRelation(subject=name, kind="facing", target=target, phrase=phrase))
             return
     if not (obj.floor and other.floor):

@@ -163,3 +163,24 @@ def test_a_wall_object_faced_by_a_floor_object_hangs_where_it_looks() -> None:
     assert ("salon chair", "facing", "mirror") in {
         (r.subject, r.kind, r.target) for r in room.relations
     }
+
+
+def test_relations_naming_places_chain_and_one_naming_an_object_ends_the_chain() -> None:
+    assert _relations("A barbershop with three barber chairs in a row facing a long mirror.") == [
+        ("barber chair", "in_row", None),
+        ("barber chair", "facing", "mirror"),
+    ]
+    assert _relations("A bedroom with a bed in the corner by the window.") == [
+        ("bed", "corner", None),
+        ("bed", "by_window", None),
+    ]
+    # "on the wall" is the TV's, not the sofa's
+    assert ("sofa", "wall", None) not in _relations(
+        "A living room with a sofa facing a TV on the wall."
+    )
+
+
+def test_each_facing_a_wall_object_gives_each_its_own() -> None:
+    plan = plan_offline("A hair salon with three salon chairs, each facing a mirror.", 0)
+    mirrors = [o for r in plan.rooms for o in r.objects if o.name == "mirror"]
+    assert [(m.quantity, m.faced_by) for m in mirrors] == [(3, "salon chair")]

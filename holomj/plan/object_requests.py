@@ -45,7 +45,6 @@ def apply_requests(state: DraftPlan) -> None:
     }
     on_wall = {r.subject for r in parsed.relations if r.kind == "wall" and r.phrase[:3] == "on "}
     seats = seating_links(state.kb, requests, parsed.relations)
-    tables = set(seats.values())
     for index, request in enumerate(requests):
         if request.excluded or request.quantity == 0:
             _exclude(state, request)
@@ -54,24 +53,48 @@ def apply_requests(state: DraftPlan) -> None:
         if reference is not None:  # "the bed" after "a queen bed": the same bed
             state.request_homes[index] = reference
             continue
-        room = _request_room(state, request)
-        name = _resolve_kind(state, request, room, index in put_on)
-        if index in on_wall:
-            _hang_flat_kind(state, name)
-        if request.generic and index in tables:  # "a table with four chairs": a seating table
-            name = seating_table(state.kb, request.kind, _present(room)) or name
-        elif index in seats:  # "six chairs around the table": the seat that goes with it
-            table = _table_kind(state, requests[seats[index]], room)
-            name = seat_for(state.kb, request.kind, table, _present(room)) or name
-        elif is_seat_word(state.kb, request) and room.get(name) is None:
-            name = _seat_at_room_table(state, request, room) or name
-        kind = state.object_kind(name)
-        quantity = _quantity(request, kind, room)
-        if kind.placement == "object":
-            _add_small(state, room, name, kind, quantity)
-        else:
-            _add_object(state, room, name, kind, quantity, request)
-        state.request_homes[index] = (room.id, name, kind.placement == "object")
+        for room in _request_rooms(state, request):
+            _request_in(state, requests, index, room, put_on, on_wall, seats)
+
+
+def _request_in(
+    state: DraftPlan,
+    requests: list[ObjectRequest],
+    index: int,
+    room: DraftRoom,
+    put_on: set[int],
+    on_wall: set[int],
+    seats: dict[int, int],
+) -> None:
+    """Request ``index`` merged into ``room``."""
+    request = requests[index]
+    name = _resolve_kind(state, request, room, index in put_on)
+    if index in on_wall:
+        _hang_flat_kind(state, name)
+    if request.generic and index in set(seats.values()):  # "a table with four chairs"
+        name = seating_table(state.kb, request.kind, _present(room)) or name
+    elif index in seats:  # "six chairs around the table": the seat that goes with it
+        table = _table_kind(state, requests[seats[index]], room)
+        name = seat_for(state.kb, request.kind, table, _present(room)) or name
+    elif is_seat_word(state.kb, request) and room.get(name) is None:
+        name = _seat_at_room_table(state, request, room) or name
+    kind = state.object_kind(name)
+    quantity = _quantity(request, kind, room)
+    if kind.placement == "object":
+        _add_small(state, room, name, kind, quantity)
+    else:
+        _add_object(state, room, name, kind, quantity, request)
+    state.request_homes.setdefault(index, (room.id, name, kind.placement == "object"))
+
+
+def _request_rooms(state: DraftPlan, request: ObjectRequest) -> list[DraftRoom]:
+    """The rooms a request goes to: every room of its template for "two bedrooms each with a
+    bunk bed", else the one room :func:`_request_room` picks."""
+    if request.each_room and request.room is not None:
+        rooms = [r for r in state.rooms if request.room in (r.template_id, r.template.counts_as)]
+        if rooms:
+            return rooms
+    return [_request_room(state, request)]
 
 
 def _reference(state: DraftPlan, request: ObjectRequest) -> tuple[str, str, bool] | None:
@@ -239,9 +262,19 @@ def _replace_same_category(state: DraftPlan, room: DraftRoom, name: str, kind: O
     for other in list(room.objects):
         if other.requested or other.name == name:
             continue
-        if other.kind.category == kind.category and other.kind.placement == kind.placement:
+        same = other.kind.category == kind.category and other.kind.placement == kind.placement
+        if same or _another_bed(other.kind, kind):
             remove_object(room, other)
             state.note(f"the {name} asked for takes the place of the {other.name} in {room.id}")
+
+
+BED_CATEGORIES = frozenset({"bed", "bunk_bed", "single_bed", "crib", "hospital_bed", "loft_bed"})
+
+
+def _another_bed(template: ObjectKind, asked: ObjectKind) -> bool:
+    """Whether the kind asked for is another bed for the room's own bed (a bunk bed asked for
+    in a bedroom is its bed, not a second one)."""
+    return template.category in BED_CATEGORIES and asked.category in BED_CATEGORIES
 
 
 def _add_small(

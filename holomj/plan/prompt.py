@@ -73,6 +73,10 @@ class ObjectRequest(FrozenModel):
     size: Literal["small", "large"] | None = None
     adjectives: list[str] = Field(default_factory=list)
     room: str | None = Field(default=None, description="Template of the room it was asked in.")
+    each_room: bool = Field(
+        default=False,
+        description="Asked for every room of that template: 'two bedrooms each with a bunk bed'.",
+    )
     excluded: bool = False
     definite: bool = Field(
         default=False, description="Named with 'the' and no number: maybe a reference."
@@ -198,6 +202,7 @@ def _read_mentions(
     context: str | None = None  # template of the room whose "with ..." list this is
     last_end = 0
     head: Mention | None = None  # the first room or scene named: what the prompt is about
+    each_room = False  # the room list is "each with ...": its objects go to every such room
     for mention in reader.mentions:
         if any(w in {".", ";", "!", "?"} for w in reader.words[last_end : mention.start]):
             context = None  # a new sentence
@@ -228,8 +233,10 @@ def _read_mentions(
                     **sizes.pop(mention.start, {}),  # type: ignore[arg-type]
                 )
             )
-            follows = reader.words[mention.end] if mention.end < len(reader.words) else ""
-            context = room.key if follows in WITH_START | {"where"} else None
+            follows = reader.words[mention.end : mention.end + 2]
+            each_room = follows[:1] == ["each"] and follows[1:] and follows[1] in WITH_START
+            starts_list = follows[:1] and follows[0] in WITH_START | {"where"}
+            context = room.key if starts_list or each_room else None
         elif thing is not None:
             found.objects.append(
                 ObjectRequest(
@@ -241,6 +248,7 @@ def _read_mentions(
                     size=_size_class(mods.size_word, reader.index),
                     adjectives=mods.adjectives,
                     room=context,
+                    each_room=bool(context and each_room),
                     excluded=excluded,
                     definite=not mods.counted and reader.words[mods.start] == "the",
                     phrase=phrase,

@@ -137,3 +137,17 @@ def test_curtains_dress_each_window_once_and_a_count_brings_its_windows() -> Non
     assert dressings("An office with blinds.")[0] == 1
     count, windows = dressings("A bedroom with curtains and no windows.")
     assert (count, windows) == (0, 0)
+
+
+def test_rooms_each_with_an_object_get_one_each_and_a_bed_asked_for_is_the_rooms_bed() -> None:
+    plan = plan_offline(
+        "A beach house with a living room, a kitchen, two bedrooms each with a bunk bed, and a "
+        "bathroom.",
+        0,
+    )
+    sleeping = [r for r in plan.rooms if r.type in {"bedroom", "master_bedroom"}]
+    assert len(sleeping) == 2
+    for room in sleeping:
+        names = [o.name for o in room.objects]
+        assert names.count("bunk bed") == 1 and "bed" not in names, (room.id, names)
+    assert not any(o.name == "bunk bed" for r in plan.rooms if r not in sleeping for o in r.objects)

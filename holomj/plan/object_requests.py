@@ -103,6 +103,10 @@ def _reference(state: DraftPlan, request: ObjectRequest) -> tuple[str, str, bool
     for room_id, name, small in state.request_homes.values():
         if name in kinds:
             return room_id, name, small
+    # "each bench" after "four lab benches": the same head noun
+    for room_id, name, small in state.request_homes.values():
+        if any(name.endswith(f" {kind}") for kind in kinds):
+            return room_id, name, small
     return None
 
 

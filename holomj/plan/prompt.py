@@ -250,7 +250,7 @@ def _read_mentions(
                     room=context,
                     each_room=bool(context and each_room),
                     excluded=excluded,
-                    definite=not mods.counted and reader.words[mods.start] == "the",
+                    definite=not mods.counted and reader.words[mods.start] in REFERRING_WORDS,
                     phrase=phrase,
                 )
             )
@@ -270,6 +270,8 @@ def _read_mentions(
     return found
 
 
+# Words before an object phrase that refer to objects already named ("the bed", "each crib").
+REFERRING_WORDS = frozenset({"the", "each", "every"})
 # The last word of a room phrase that names a part of a room rather than a room.
 ZONE_WORDS = frozenset({"corner", "nook", "area", "zone", "space", "station"})
 LOCATION_WORDS = (("in", "the"), ("in", "a"), ("in", "an"), ("inside", "the"), ("inside", "a"))

@@ -177,6 +177,9 @@ def _object_relation(
     if kind == "above":
         if not obj.floor and other.floor:
             obj.above = target
+            if "each" in phrase.split() and obj.quantity < other.quantity:
+                # "a mobile above each crib": one above every crib
+                obj.quantity = min(other.quantity, MAX_QUANTITY)
             _add(room, PlanRelation(subject=name, kind="above", target=target, phrase=phrase))
         else:
             state.note(f"'{name} {phrase}': only a wall object hangs above a floor object")

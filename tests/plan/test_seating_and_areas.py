@@ -151,3 +151,19 @@ def test_rooms_each_with_an_object_get_one_each_and_a_bed_asked_for_is_the_rooms
         names = [o.name for o in room.objects]
         assert names.count("bunk bed") == 1 and "bed" not in names, (room.id, names)
     assert not any(o.name == "bunk bed" for r in plan.rooms if r not in sleeping for o in r.objects)
+
+
+def test_each_refers_to_the_objects_named_before() -> None:
+    plan = plan_offline(
+        "A nursery with two cribs side by side, a changing table and a mobile above each crib.", 0
+    )
+    objects = {o.name: o for r in plan.rooms for o in r.objects}
+    assert objects["crib"].quantity == 2
+    assert (objects["baby mobile"].quantity, objects["baby mobile"].above) == (2, "crib")
+    lab = plan_offline("A biology lab with four lab benches and a microscope on each bench.", 0)
+    benches = [o for r in lab.rooms for o in r.objects if o.name == "lab bench"]
+    assert [b.quantity for b in benches] == [4]
+    assert [(s.name, s.quantity) for s in benches[0].on_top if s.name == "microscope"] == [
+        ("microscope", 1)
+    ]
+    assert not any(o.name == "bench" for r in lab.rooms for o in r.objects)

@@ -49,6 +49,7 @@ class DraftObject:
     faced_by: str | None = None  # wall objects: the floor object that looks at it
     on_top: list[DraftSmall] = field(default_factory=list)
     adjectives: list[str] = field(default_factory=list)
+    parts: list[str] = field(default_factory=list)  # "brass handles": parts asked of it
     asked: str = ""  # the prompt's words for a requested object
 
     @property

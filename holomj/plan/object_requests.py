@@ -257,6 +257,7 @@ def _add_object(
     obj.requested = True
     obj.per = None
     obj.adjectives = list(request.adjectives)
+    obj.parts = list(request.parts)
     obj.asked = request.phrase
 
 

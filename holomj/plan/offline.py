@@ -153,8 +153,10 @@ def _plan_object(
     state: DraftPlan, obj: DraftObject, styles: list[str], defining: bool
 ) -> PlanObject:
     description = obj.kind.description
-    if obj.adjectives:
-        description = f"{' '.join(obj.adjectives)} {obj.name}"
+    if obj.adjectives or obj.parts:
+        description = " ".join([*obj.adjectives, obj.name])
+    if obj.parts:  # "white kitchen cabinet with brass handles": the asset stage reads parts
+        description += " with " + " and ".join(obj.parts)
     if styles:
         description += f" in {styles[0]} style"
     return PlanObject(

@@ -44,6 +44,7 @@ from holomj.plan.prompt_clauses import (
 )
 from holomj.plan.prompt_index import PhraseIndex, phrase_index
 from holomj.plan.prompt_materials import lone_materials, read_materials
+from holomj.plan.prompt_parts import part_after
 from holomj.plan.prompt_reader import Mention, Reader, match_phrases, read_modifiers
 from holomj.plan.prompt_relations import RelationRequest, read_relations
 from holomj.plan.prompt_sizes import read_sizes
@@ -73,6 +74,9 @@ class ObjectRequest(FrozenModel):
     size: Literal["small", "large"] | None = None
     adjectives: list[str] = Field(default_factory=list)
     room: str | None = Field(default=None, description="Template of the room it was asked in.")
+    parts: list[str] = Field(
+        default_factory=list, description="Parts asked of it: 'brass handles', 'a red seat'."
+    )
     each_room: bool = Field(
         default=False,
         description="Asked for every room of that template: 'two bedrooms each with a bunk bed'.",
@@ -149,6 +153,7 @@ def parse_prompt(text: str, kb: KnowledgeBase) -> ParsedPrompt:
     head_end = next((i for i, w in enumerate(reader.words) if w in HEAD_END), len(reader.words))
     scene = scene_mention(reader, head_end)
     found = _read_mentions(reader, scene, sizes)
+    _attach_parts(reader, found)
     scene_sizes = sizes.pop(-1, {})
     for start in sorted(sizes):  # sizes next to no room phrase: they describe the scene
         scene_sizes = scene_sizes or sizes[start]
@@ -237,6 +242,8 @@ def _read_mentions(
             each_room = follows[:1] == ["each"] and follows[1:] and follows[1] in WITH_START
             starts_list = follows[:1] and follows[0] in WITH_START | {"where"}
             context = room.key if starts_list or each_room else None
+        elif thing is not None and _is_part_of_previous(reader, found, mention):
+            continue  # "a chair with a red seat": the chair's seat (kept by _attach_parts)
         elif thing is not None:
             found.objects.append(
                 ObjectRequest(
@@ -282,6 +289,27 @@ def _located_in(reader: Reader, head: Mention, mention: Mention) -> bool:
     are only ``in the``)."""
     between = tuple(reader.words[head.end : mention.start])
     return between in LOCATION_WORDS
+
+
+def _is_part_of_previous(reader: Reader, found: _Found, mention: Mention) -> bool:
+    """Whether an object phrase names a part of the object before it ("with a red seat")."""
+    if not found.spans:
+        return False
+    part = part_after(reader.words, found.spans[-1][1])
+    return part is not None and part[0] <= mention.start and mention.end == part[1]
+
+
+def _attach_parts(reader: Reader, found: _Found) -> None:
+    """Part phrases after each object ("cabinets with brass handles") kept with the object, and
+    their words taken out of the unknown-noun search."""
+    for n, (_, end) in enumerate(found.spans):
+        part = part_after(reader.words, end)
+        if part is None or any(start < part[1] and e > part[0] for start, e in found.spans):
+            continue
+        obj = found.objects[n]
+        found.objects[n] = obj.model_copy(update={"parts": [*obj.parts, reader.text(*part)]})
+        for k in range(*part):
+            reader.used[k] = True
 
 
 def _per_each(

@@ -299,13 +299,13 @@ def _add_small(
     holders = sorted(
         (o for o in room.objects if o.floor and weight(o) > 0), key=lambda o: -weight(o)
     )
-    if not holders:  # no receptacle lists it: the room's roomiest receptacle top holds it
+    if not holders:  # none lists it for this room type: one that holds it in some room type
         holders = sorted(
-            (o for o in room.objects if o.floor and kb.is_receptacle(o.kind.category)),
+            (o for o in room.objects if o.floor and like in kb.allowed_small(o.kind.category)),
             key=lambda o: -o.footprint,
         )[:1]
     if not holders:
-        holder_kind = _receptacle_for(state, room, like) or _any_receptacle(state, room)
+        holder_kind = _receptacle_for(state, room, like) or _any_receptacle(state, room, like)
         if holder_kind is None:
             state.note(
                 f"no receptacle in the knowledge base holds {plural_name(name, 2)}; left out"
@@ -341,23 +341,23 @@ def _add_small(
         )
 
 
-def _any_receptacle(state: DraftPlan, room: DraftRoom) -> str | None:
-    """The floor receptacle kind that belongs in this room with the largest top (a counter in
-    a kitchen, a table in a dining room), else a side table: something to put things on."""
+def _any_receptacle(state: DraftPlan, room: DraftRoom, category: str) -> str | None:
+    """The floor kind with the largest top that holds ``category`` in some room type, those
+    that belong in this room first (a counter for a microwave in a cafe)."""
     kb = state.kb
     kinds = [
         k
-        for k in kb.kinds_in_room(room.template_id, "floor")
-        if kb.is_receptacle(kb.objects[k].category)
+        for k, kind in kb.objects.items()
+        if kind.placement == "floor" and category in kb.allowed_small(kind.category)
     ]
     if not kinds:
-        return "side table" if "side table" in kb.objects else None
+        return None
 
-    def top(name: str) -> float:
+    def rank(name: str) -> tuple[bool, float]:
         width, depth, _ = kb.objects[name].size or (0.0, 0.0, 0.0)
-        return width * depth
+        return room.template_id in kb.objects[name].rooms, width * depth
 
-    return max(kinds, key=top)
+    return max(kinds, key=rank)
 
 
 def _receptacle_for(state: DraftPlan, room: DraftRoom, category: str) -> str | None:

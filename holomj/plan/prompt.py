@@ -208,9 +208,15 @@ def _read_mentions(
     last_end = 0
     head: Mention | None = None  # the first room or scene named: what the prompt is about
     each_room = False  # the room list is "each with ...": its objects go to every such room
+    starts = {m.start: m for m in reader.mentions}
+    attributive: list[str] = []  # "an orange sofa": a noun right before an object's noun
     for mention in reader.mentions:
         if any(w in {".", ";", "!", "?"} for w in reader.words[last_end : mention.start]):
             context = None  # a new sentence
+        following = starts.get(mention.end)
+        if _object_of(mention) and following is not None and _object_of(following):
+            attributive.extend(reader.words[mention.start : mention.end])
+            continue
         located = head is not None and _located_in(reader, head, mention)
         last_end = mention.end
         if head is None and (mention is scene or mention.meaning("room") is not None):
@@ -253,7 +259,7 @@ def _read_mentions(
                     many=mods.many,
                     plural=thing.plural,
                     size=_size_class(mods.size_word, reader.index),
-                    adjectives=mods.adjectives,
+                    adjectives=[*attributive, *mods.adjectives],
                     room=context,
                     each_room=bool(context and each_room),
                     excluded=excluded,
@@ -262,6 +268,7 @@ def _read_mentions(
                 )
             )
             found.spans.append((mention.start, mention.end))
+            attributive = []
         elif refusal is not None and not excluded:
             reason = reader.kb.refused[refusal.key].reason
             found.refused.append(RefusedRequest(name=refusal.key, phrase=phrase, reason=reason))
@@ -289,6 +296,11 @@ def _located_in(reader: Reader, head: Mention, mention: Mention) -> bool:
     are only ``in the``)."""
     between = tuple(reader.words[head.end : mention.start])
     return between in LOCATION_WORDS
+
+
+def _object_of(mention: Mention) -> bool:
+    """Whether a phrase names an object (a known kind or a generic word)."""
+    return mention.meaning("object") is not None or mention.meaning("generic") is not None
 
 
 def _is_part_of_previous(reader: Reader, found: _Found, mention: Mention) -> bool:

@@ -131,7 +131,8 @@ def _unknown_item(reader: Reader, item: list[int], covered: list[bool]) -> str |
     content = [k for k in item if _is_content(reader, reader.words[k])]
     if not content:
         return None
-    return " ".join(reader.words[content[0] : min(content[-1], content[0] + 5) + 1])
+    span = range(content[0], min(content[-1], content[0] + 5) + 1)
+    return " ".join(reader.words[k] for k in span if not is_number(reader.words[k]))
 
 
 def _is_content(reader: Reader, word: str) -> bool:

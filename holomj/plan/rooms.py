@@ -92,7 +92,7 @@ def _part_of_a_room(
     if mention.location:
         state.note(f"'{mention.phrase}' says where the {scene.name} is; planned no {name} besides")
         return True
-    if mention.excluded or mention.count is not None:
+    if mention.excluded or mention.count is not None or "separate" in mention.phrase.split():
         return False
     if any(
         e.template == mention.template or kb.rooms[e.template].counts_as == mention.template
@@ -101,10 +101,13 @@ def _part_of_a_room(
     ):
         return False
     defining = set(kb.rooms[mention.template].defining)
+    one_room = sum(1 for e in scene.rooms if counts.get(e.id)) == 1
     for entry in scene.rooms:
         host = kb.rooms[entry.template]
-        inside = defining <= set(host.kinds()) and _open_plan(state, host)
-        if counts.get(entry.id) and (mention.zone or inside):
+        open_plan = _open_plan(state, host)
+        inside = defining <= set(host.kinds()) and open_plan
+        # an area ("a reading corner") is part of a scene of one room, or of an open-plan room
+        if counts.get(entry.id) and ((mention.zone and (one_room or open_plan)) or inside):
             state.note(f"planned '{mention.phrase}' as part of the {host.name}")
             return True
     return False

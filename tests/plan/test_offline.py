@@ -100,7 +100,10 @@ def check_plan(plan: ScenePlan, kb: KnowledgeBase) -> None:
             assert obj.category in categories or _made_for_the_prompt(plan, obj.name)
             assert obj.size is not None
             if obj.on_top:
+                # what the receptacle holds in this room type, or (a small thing asked for
+                # that this room type's table does not list) in some room type
                 allowed = {c for c, _ in kb.small_choices(room.type, obj.category)}
+                allowed |= kb.allowed_small(obj.category)
                 assert sum(s.quantity for s in obj.on_top) <= limits.max_small_per_receptacle
                 for small in obj.on_top:
                     assert small.category in allowed, (room.id, obj.name, small.name)

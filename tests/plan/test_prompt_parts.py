@@ -48,3 +48,10 @@ def test_with_and_another_object_is_still_another_object() -> None:
     parsed = parse_prompt("A kitchen with a table with four chairs.", knowledge_base())
     assert [o.kind for o in parsed.objects] == ["table", "chair"]
     assert all(not o.parts for o in parsed.objects)
+
+
+def test_a_noun_right_before_an_objects_noun_describes_it() -> None:
+    parsed = parse_prompt("A living room with an orange sofa.", knowledge_base())
+    assert [(o.kind, o.adjectives) for o in parsed.objects] == [("sofa", ["orange"])]
+    parsed = parse_prompt("A kitchen with an orange and a bowl.", knowledge_base())
+    assert [o.kind for o in parsed.objects] == ["orange", "bowl"]

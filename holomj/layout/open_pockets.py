@@ -93,7 +93,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     steps = max(1, round(MAX_SHIFT_M / g))
     trials = 0
     for _ in range(MAX_ROUNDS):
-        best: tuple[tuple[float, float], dict[int, Pose]] | None = None
+        best: tuple[tuple[bool, float, float], dict[int, Pose]] | None = None
         for i in _bordering(prep, poses, pocket, meter):
             x, y, k = poses[i]
             for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)):
@@ -109,12 +109,13 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                     if new_weight < weight - 1e-9 and share >= CUT_OFF_SHARE:
                         continue  # soft constraints give way only to a door cut off
                     new_share, _ = meter.pockets(prep.footprints(trial))
-                    key = (new_share, new_weight)
+                    # the door reconnected first, then the constraints kept, then the share
+                    key = (new_share >= CUT_OFF_SHARE, new_weight, new_share)
                     if new_share > share + 1e-6 and (best is None or key > best[0]):
                         best = (key, trial)
         if best is None:
             break
-        (share, weight), poses = best
+        (_, weight, share), poses = best
         share, pocket = meter.pockets(prep.footprints(poses))
         if share >= TARGET_SHARE:
             break

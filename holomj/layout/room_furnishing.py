@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
 import numpy as np
@@ -26,8 +26,17 @@ from shapely import affinity
 from shapely.geometry import Point, Polygon, box
 
 from holomj.errors import HolomjError
+from holomj.layout.counter_runs import (
+    ISLAND_CATEGORY,
+    requested_shape,
+    run_modules,
+    run_windows,
+    solve_counter_run,
+)
+from holomj.layout.desk_grid import front_lookers, solve_desk_grid
 from holomj.layout.geometry import LAYOUT_MARGIN_M
 from holomj.layout.relation_constraints import relation_constraints, relation_verdicts
+from holomj.layout.relation_room import make_room_for_relations
 from holomj.layout.room_problem import (
     LayoutDoor,
     LayoutObject,
@@ -48,7 +57,7 @@ from holomj.layout.window_moves import raise_sill, relocate_window
 from holomj.library.store import AssetLibrary
 from holomj.seeds import stage_rng
 from holomj.spec.decor import DECOR_CATEGORIES
-from holomj.spec.plan import PlanObject, PlanRoom, instance_name
+from holomj.spec.plan import PlanObject, PlanRoom, PlanSmallObject, instance_name
 from holomj.spec.scene import Door, Room, SceneObject, Window
 from holomj.spec.walls import Wall
 
@@ -81,6 +90,9 @@ WALL_KINDS = {
     "shelf": "shelf",
     "television": "television",
     "wall_television": "television",
+    # Window dressings hang at the room's windows (holomj.layout.window_dressing).
+    "curtains": "curtains",
+    "blinds": "blinds",
 }
 
 
@@ -180,18 +192,26 @@ def furnish_room(
     seed: int,
     *,
     time_limit_s: float = 1.0,
+    request: str = "",
 ) -> RoomFurniture:
     """Lay out the retrieved floor ``assets`` of ``plan_room`` in ``room`` and hang its wall
     objects.
 
     Defining furniture goes first (it outweighs every optional object in the solver). When it
     still does not fit, a window that keeps it out is moved to a free stretch of exterior wall,
-    or left out when there is none; ``changes`` says what moved and why."""
+    or left out when there is none; ``changes`` says what moved and why. A kitchen's counters,
+    sink, cooker and dishwasher make one counter run (:mod:`holomj.layout.counter_runs`; its
+    record is ``layout["counter_run"]``), in the shape ``request`` (the prompt) or the room's
+    words ask for, if any. Many desks and their seats stand in rows facing one front wall
+    (:mod:`holomj.layout.desk_grid`; its record is ``layout["desk_grid"]``), and the room's
+    boards hang on that wall."""
     out = RoomFurniture(room.id, picks=list(assets.picks), unplaced=list(assets.failed))
     windows = [w for w in context.windows if room.id in w.rooms]
 
-    def solve(room_windows: list[Window]) -> LayoutResult:
-        problem = _problem(plan_room, room, context, room_windows, assets, library)
+    metas = {instance: library.get(a).meta for instance, a in assets.floor.items()}
+    runs: list[tuple[LayoutResult, dict[str, Any]]] = []  # each layout's counter run, if any
+
+    def plain(problem: RoomProblem) -> LayoutResult:
         return solve_room(
             problem,
             solver="cpsat",
@@ -199,12 +219,57 @@ def furnish_room(
             rng=stage_rng(seed, "layout", room.id),
         )
 
+    grid_log: list[dict[str, Any] | None] = []  # the desk grid of each gridded solve
+    grids: list[tuple[LayoutResult, dict[str, Any] | None]] = []
+
+    def gridded(problem: RoomProblem) -> LayoutResult:
+        # desks and their seats in rows (holomj.layout.desk_grid), inside the counter run
+        result, grid = solve_desk_grid(
+            problem,
+            {i: m.category for i, m in metas.items()},
+            solve=plain,
+            plan_room=plan_room,
+            request=request,
+            defining_priority=DEFINING_PRIORITY,
+            keep_priority=REQUESTED_PRIORITY,
+        )
+        grid_log.append(grid)
+        return result
+
+    def solve(room_windows: list[Window], room_assets: RoomAssets = assets) -> LayoutResult:
+        problem = _problem(plan_room, room, context, room_windows, room_assets, library)
+        categories = {i: m.category for i, m in metas.items()}
+        result, run = solve_counter_run(
+            problem,
+            run_modules(problem, categories, {i: m.size for i, m in metas.items()}),
+            solve=gridded,
+            rng=stage_rng(seed, "counter_run", room.id),
+            requested=requested_shape(plan_room, request),
+            island=next((i for i, c in categories.items() if c == ISLAND_CATEGORY), None),
+            defining_priority=DEFINING_PRIORITY,
+            windows=room_windows,
+            wall_height=context.wall_height,
+        )
+        if run is not None:
+            runs.append((result, run))
+        grids.append((result, grid_log[-1] if grid_log else None))  # the last solve is used
+        return result
+
     result = solve(windows)
     windows, result = _make_room_for_defining(
         plan_room, room, context, assets.floor, library, windows, result, solve, out
     )
-    out.windows = windows
+    result = _make_room_for_relations(plan_room, assets, metas, windows, result, solve, out)
     out.layout = _layout_record(result)
+    run = next((record for solved, record in runs if solved is result), None)
+    if run is not None:
+        out.layout["counter_run"] = run
+        windows, notes = run_windows(windows, run)
+        out.changes.extend(f"{room.id}: {note}" for note in notes)
+    grid = next((record for solved, record in grids if solved is result), None)
+    if grid is not None:
+        out.layout["desk_grid"] = grid
+    out.windows = windows
     out.relations = relation_verdicts(plan_room, result.constraints)
     out.warnings.extend(result.warnings)
     by_name = {o.name: o for o in plan_room.objects}
@@ -232,9 +297,78 @@ def furnish_room(
         if plan_obj.on_top:
             out.receptacles.append((oid, plan_obj))
     _lay_rugs(plan_room, room, context, assets.floor, result, library, out)
-    _hang(plan_room, room, context, windows, assets.wall, floor_items, library, seed, out)
+    hung_for = front_lookers(plan_room, grid)  # boards hang where the front row looks
+    _hang(hung_for, room, context, windows, assets.wall, floor_items, library, seed, out)
+    _stand_unhung_tvs(plan_room, room, out)
     _hang_from_ceiling(plan_room, room, context, assets.ceiling, floor_items, library, out)
     return out
+
+
+def _paired(room_id: str, instance: str, target: str, counts: dict[str, int]) -> str:
+    """The floor instance of ``target`` that wall or ceiling instance ``instance`` is hung for:
+    mirror k for salon chair k, mobile k above crib k (beyond the targets' count, round again)."""
+    index = int(instance.rsplit("-", 1)[1]) if instance.rsplit("-", 1)[-1].isdigit() else 0
+    return object_id(room_id, instance_name(target, index % max(1, counts.get(target, 1))))
+
+
+def _make_room_for_relations(
+    plan_room: PlanRoom,
+    assets: RoomAssets,
+    metas: dict[str, Any],
+    windows: list[Window],
+    result: LayoutResult,
+    solve: Callable[[list[Window], RoomAssets], LayoutResult],
+    out: RoomFurniture,
+) -> LayoutResult:
+    """When a prompt relation does not hold, leave optional objects out (the largest first) if
+    that makes it hold (:mod:`holomj.layout.relation_room`); the left-out ones are reported."""
+    priorities = _priorities(plan_room)
+    optional = sorted(
+        (i for i, p in priorities.items() if p < REQUESTED_PRIORITY and i in metas),
+        key=lambda i: (-metas[i].size[0] * metas[i].size[1], i),
+    )
+
+    def solve_without(dropped: frozenset[str]) -> LayoutResult:
+        floor = {i: a for i, a in assets.floor.items() if i not in dropped}
+        return solve(windows, replace(assets, floor=floor))
+
+    made = make_room_for_relations(result, optional, solve_without)
+    for instance in made.dropped:
+        out.unplaced.append({"object": instance, "stage": "layout", "reason": made.reason})
+    return made.result
+
+
+def _stand_unhung_tvs(plan_room: PlanRoom, room: Room, out: RoomFurniture) -> None:
+    """A TV that could not hang over its stand (a window or door took that wall) stands on the
+    stand instead: it joins the stand's small objects, dropped and settled with them."""
+    above = {o.name: o.above for o in plan_room.objects if o.placement == "wall" and o.above}
+    by_name = {o.name: o for o in plan_room.objects}
+    placed = {o.id for o in out.objects}
+    kept = []
+    for item in out.unplaced:
+        name = str(item.get("object", "")).rsplit("-", 1)[0]
+        stand = above.get(name)
+        oid = object_id(room.id, instance_name(stand, 0)) if stand is not None else ""
+        if item.get("stage") != "wall" or name != "television" or oid not in placed:
+            kept.append(item)
+            continue
+        tv = PlanSmallObject(
+            name="television",
+            description="a flat-screen television on feet",
+            category="television",
+            variance="same",
+        )
+        index = next((i for i, (rid, _) in enumerate(out.receptacles) if rid == oid), None)
+        holder = by_name[stand] if index is None else out.receptacles[index][1]
+        others = [s for s in holder.on_top if s.category != "television"]
+        entry = (oid, holder.model_copy(update={"on_top": [tv, *others]}))
+        if index is None:
+            out.receptacles.append(entry)
+        else:
+            out.receptacles[index] = entry
+        reason = item.get("reason", "no wall for it")
+        out.changes.append(f"{room.id}: {item['object']}: {reason}; it stands on {oid} instead")
+    out.unplaced = kept
 
 
 def _hang_from_ceiling(
@@ -255,13 +389,14 @@ def _hang_from_ceiling(
     centre = (
         polygon.centroid if polygon.centroid.within(polygon) else polygon.representative_point()
     )
+    counts = {o.name: o.quantity for o in plan_room.objects if o.placement == "floor"}
     for obj in plan_room.objects:
         if obj.placement != "ceiling":
             continue
         instances = [i for i in obj.instances() if i in assets]
         for k, instance in enumerate(instances):
             meta = library.get(assets[instance]).meta
-            target = object_id(room.id, instance_name(obj.above, 0)) if obj.above else None
+            target = _paired(room.id, instance, obj.above, counts) if obj.above else None
             if target in centres:
                 x, y = centres[target].x, centres[target].y
             else:
@@ -404,12 +539,15 @@ def on_demand_record(pick: Any) -> dict[str, Any]:
     synthesised, proxy...); empty for a pick that does not say (a plain ranking)."""
     if getattr(pick, "attributes_asked", None) is None:
         return {}
-    return {
+    record = {
         "attributes_asked": pick.attributes_asked,
         "attributes_honoured": pick.attributes_honoured or {},
         "how": pick.how,
         "proxy": bool(pick.proxy),
     }
+    if getattr(pick, "attributes_how", None) is not None:  # per part: "brass on the handles"
+        record["attributes_how"] = pick.attributes_how
+    return record
 
 
 def _hung_above(
@@ -580,6 +718,7 @@ def _hang(
 ) -> None:
     above = {o.name: o.above for o in plan_room.objects if o.placement == "wall"}
     faced_by = {o.name: o.faced_by for o in plan_room.objects if o.placement == "wall"}
+    counts = {o.name: o.quantity for o in plan_room.objects if o.placement == "floor"}
     requests = []
     asset_of = {object_id(room.id, instance): a for instance, a in assets.items()}
     for instance, asset_id in assets.items():
@@ -592,8 +731,8 @@ def _hang(
                 id=object_id(room.id, instance),
                 size=(width, depth, height),
                 kind=WALL_KINDS.get(meta.category, "other"),
-                above=object_id(room.id, instance_name(target, 0)) if target else None,
-                faced_by=object_id(room.id, instance_name(looker, 0)) if looker else None,
+                above=_paired(room.id, instance, target, counts) if target else None,
+                faced_by=_paired(room.id, instance, looker, counts) if looker else None,
             )
         )
     if not requests:

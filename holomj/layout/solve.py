@@ -181,10 +181,14 @@ def _placed_priority(prep: PreparedRoom, poses: dict[int, Pose]) -> int:
     return sum(prep.items[i].priority for i in poses)
 
 
+SNAP_REACH_M = 1.0  # how far an edge object may be pushed back towards its wall
+
+
 def snap_to_walls(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
-    """Objects asked to stand at an ``edge`` pushed back, a grid step at a time, until their
-    back meets the wall (as Holodeck moves edge objects onto the wall); a step is kept only
-    while every hard rule still holds and no satisfied constraint is lost."""
+    """Objects asked to stand at an ``edge`` pushed back, a grid step at a time (up to
+    :data:`SNAP_REACH_M`), until their back meets the wall (as Holodeck moves edge objects onto
+    the wall; one the search left short of its wall gets there too); a step is kept only while
+    every hard rule still holds and no satisfied constraint is lost."""
     edge = sorted({prep.index[c.object] for c in prep.constraints if c.kind == "edge"})
     if not edge:
         return poses
@@ -194,7 +198,7 @@ def snap_to_walls(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]
     if not checks.ok:
         return poses
     weight = satisfied_weight(prep, prep.metres(poses))
-    steps = max(1, prep.units_up(prep.settings.edge_tolerance_m + g))
+    steps = max(1, prep.units_up(max(prep.settings.edge_tolerance_m + g, SNAP_REACH_M)))
     for i in edge:
         if i not in poses:
             continue

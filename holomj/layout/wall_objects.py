@@ -29,13 +29,17 @@ Nothing may overlap, in the wall plane, a door with its frame (up to the header,
 height for ``open`` doors), a window with its frame, another wall object (checked in 3D, so
 objects on two walls meeting at a corner are caught), or floor furniture near the wall that
 rises above the object's bottom.
+
+Curtains and blinds (kinds ``curtains`` and ``blinds``, ``DRESSING_KINDS``) are the exception:
+they hang at the room's windows, sized to them, and are placed before everything else (see
+:mod:`holomj.layout.window_dressing`). The geometry of wall faces is in
+:mod:`holomj.layout.wall_faces`.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Annotated
 
 import numpy as np
@@ -44,9 +48,43 @@ from shapely.geometry import LineString, Point, Polygon
 
 from holomj.errors import SpecError
 from holomj.layout.floorplan import normal_type
+from holomj.layout.wall_faces import (
+    CEILING_GAP_M,
+    END_MARGIN_M,
+    OBJECT_GAP_M,
+    OPENING_MARGIN_M,
+    FloorItem,
+    PlacedBox,
+    Unplaced,
+    WallFace,
+    WallPlacement,
+    face_band,
+    face_point,
+    face_rect,
+    fits_on,
+    hits_placed,
+    room_faces,
+)
+from holomj.layout.window_dressing import DRESSING_KINDS, DressingRequest, dress_windows
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
-from holomj.spec.scene import Door, Light, Room, SceneObject, Window
+from holomj.spec.scene import Door, Light, Room, Window
 from holomj.spec.walls import Wall, find_wall_for_opening
+
+__all__ = [
+    "ABOVE_GAP_M",
+    "CEILING_GAP_M",
+    "DRESSING_KINDS",
+    "END_MARGIN_M",
+    "OBJECT_GAP_M",
+    "OPENING_MARGIN_M",
+    "FloorItem",
+    "Unplaced",
+    "WallObjectRequest",
+    "WallPlacement",
+    "ceiling_lights",
+    "default_bottom",
+    "place_wall_objects",
+]
 
 # (reference, metres): reference "centre" or "bottom".
 WALL_HEIGHTS: dict[str, tuple[str, float]] = {
@@ -60,12 +98,8 @@ WALL_HEIGHTS: dict[str, tuple[str, float]] = {
 }
 DEFAULT_WALL_HEIGHT = ("centre", 1.5)
 ABOVE_GAP_M = 0.1  # between a floor object's top and the wall object above it
-OPENING_MARGIN_M = 0.05  # frames stick out of the opening's span by about this
-END_MARGIN_M = 0.1  # from the ends of a wall segment (a crossing interior wall's half thickness)
-CEILING_GAP_M = 0.05  # a wall object's top stays this far below the wall top
 NEAR_WALL_M = 0.3  # furniture closer than object depth + this to the face counts as in front
 FREE_STEP_M = 0.05
-OBJECT_GAP_M = 0.02  # between two wall objects
 
 
 class WallObjectRequest(FrozenModel):
@@ -83,85 +117,6 @@ class WallObjectRequest(FrozenModel):
     )
 
 
-@dataclass(frozen=True)
-class FloorItem:
-    """A floor object as wall placement sees it: its footprint and its height."""
-
-    id: str
-    footprint: Polygon
-    height: float
-    front: tuple[float, float] | None = None  # the unit direction it faces, if known
-
-
-@dataclass(frozen=True)
-class WallPlacement:
-    """Where a wall object goes: position of its bottom centre, yaw, and the wall it hangs on."""
-
-    id: str
-    x: float
-    y: float
-    z: float
-    yaw_deg: float
-    wall_id: str
-    room: str
-    note: str | None = None  # how it was placed when not as asked (a TV off its stand's wall)
-
-    def scene_object(
-        self, asset: str, scale: float | tuple[float, float, float] = 1.0
-    ) -> SceneObject:
-        """A static SceneObject for this placement."""
-        return SceneObject(
-            id=self.id,
-            asset=asset,
-            position=(self.x, self.y, self.z),
-            yaw_deg=self.yaw_deg,
-            scale=scale,
-            static=True,
-            room=self.room,
-        )
-
-
-@dataclass(frozen=True)
-class Unplaced:
-    """A wall object that found no place, and why."""
-
-    id: str
-    reason: str
-
-
-@dataclass(frozen=True)
-class _Face:
-    wall: Wall
-    offset: float  # distance of the face from the wall line, into the room
-    inward: tuple[float, float]
-
-
-@dataclass(frozen=True)
-class _Placed:
-    footprint: Polygon
-    z0: float
-    z1: float
-    wall_id: str
-    t0: float
-    t1: float
-
-
-def _faces(room: Room, walls: Sequence[Wall], wall_thickness: float) -> list[_Face]:
-    faces = []
-    for wall in walls:
-        if room.id not in wall.rooms:
-            continue
-        nx, ny = wall.normal
-        if wall.exterior:
-            inward = (-wall.outward[0], -wall.outward[1])
-            offset = 0.0
-        else:
-            inward = (nx, ny) if wall.left_room == room.id else (-nx, -ny)
-            offset = wall_thickness / 2
-        faces.append(_Face(wall, offset, inward))
-    return faces
-
-
 def default_bottom(kind: str, height: float) -> float:
     """Default z of the bottom of a wall object of this kind and height."""
     ref, value = WALL_HEIGHTS.get(normal_type(kind), DEFAULT_WALL_HEIGHT)
@@ -169,7 +124,7 @@ def default_bottom(kind: str, height: float) -> float:
 
 
 def _blocks(
-    face: _Face,
+    face: WallFace,
     doors: Sequence[Door],
     windows: Sequence[Window],
     walls: Sequence[Wall],
@@ -199,42 +154,13 @@ def _blocks(
         half = width / 2 + OPENING_MARGIN_M
         out.append((t - half, t + half, z0, z1, what))
     # Furniture standing near the face, projected onto it.
-    near = _face_band(face, depth + NEAR_WALL_M)
+    near = face_band(face, depth + NEAR_WALL_M)
     for item in floor:
         if item.id == skip or not item.footprint.intersects(near):
             continue
         ts = [face.wall.locate(p)[0] for p in item.footprint.exterior.coords]
         out.append((min(ts), max(ts), 0.0, item.height, f"floor object {item.id}"))
     return out
-
-
-def _face_band(face: _Face, reach: float) -> Polygon:
-    """The strip of floor in front of the face, ``reach`` deep."""
-    wall = face.wall
-    ix, iy = face.inward
-    a = _face_point(face, 0.0, 0.0)
-    b = _face_point(face, wall.length, 0.0)
-    return Polygon(
-        [a, b, (b[0] + ix * reach, b[1] + iy * reach), (a[0] + ix * reach, a[1] + iy * reach)]
-    )
-
-
-def _face_point(face: _Face, t: float, out: float) -> tuple[float, float]:
-    x, y = face.wall.point_at(t)
-    ix, iy = face.inward
-    d = face.offset + out
-    return (x + ix * d, y + iy * d)
-
-
-def _footprint(face: _Face, t: float, width: float, depth: float) -> Polygon:
-    return Polygon(
-        [
-            _face_point(face, t - width / 2, 0.0),
-            _face_point(face, t + width / 2, 0.0),
-            _face_point(face, t + width / 2, depth),
-            _face_point(face, t - width / 2, depth),
-        ]
-    )
 
 
 def _clear(
@@ -248,14 +174,6 @@ def _clear(
         if t0 < b1 - 1e-9 and b0 < t1 - 1e-9 and z0 < c1 - 1e-9 and c0 < z1 - 1e-9:
             return what
     return None
-
-
-def _hits_placed(foot: Polygon, z0: float, z1: float, placed: Sequence[_Placed]) -> bool:
-    for other in placed:
-        overlap_z = z0 < other.z1 + OBJECT_GAP_M and other.z0 < z1 + OBJECT_GAP_M
-        if overlap_z and foot.distance(other.footprint) < OBJECT_GAP_M:
-            return True
-    return False
 
 
 def place_wall_objects(
@@ -282,11 +200,24 @@ def place_wall_objects(
         for f in floor_objects
     ]
     by_id = {f.id: f for f in floor}
-    faces = _faces(room, walls, wall_thickness)
-    placed: list[_Placed] = []
-    result: list[WallPlacement] = []
-    unplaced: list[Unplaced] = []
+    faces = room_faces(room, walls, wall_thickness)
+    placed: list[PlacedBox] = []
+    # Curtains and blinds first: they belong at windows, everything else can go elsewhere.
+    dressings = [r for r in requests if normal_type(r.kind) in DRESSING_KINDS]
+    result, unplaced = dress_windows(
+        room,
+        faces,
+        walls,
+        doors,
+        windows,
+        floor,
+        [DressingRequest(r.id, normal_type(r.kind), r.size) for r in dressings],
+        placed,
+        wall_height=wall_height,
+    )
     for req in requests:
+        if normal_type(req.kind) in DRESSING_KINDS:
+            continue
         width, depth, height = req.size
         if req.above is not None and req.above not in by_id:
             unplaced.append(Unplaced(req.id, f"unknown floor object {req.above!r} to hang above"))
@@ -351,9 +282,9 @@ def place_wall_objects(
             unplaced.append(Unplaced(req.id, outcome))
             continue
         face, t = outcome
-        foot = _footprint(face, t, width, depth)
-        placed.append(_Placed(foot, base, z1, face.wall.id, t - width / 2, t + width / 2))
-        x, y = _face_point(face, t, depth / 2)
+        foot = face_rect(face, t, width, depth)
+        placed.append(PlacedBox(foot, base, z1, face.wall.id, t - width / 2, t + width / 2))
+        x, y = face_point(face, t, depth / 2)
         yaw = math.degrees(math.atan2(face.inward[1], face.inward[0]))
         result.append(
             WallPlacement(
@@ -367,36 +298,32 @@ def place_wall_objects(
                 note=note,
             )
         )
+    order = {req.id: k for k, req in enumerate(requests)}
+    result.sort(key=lambda p: order[p.id])
+    unplaced.sort(key=lambda u: order[u.id])
     return result, unplaced
-
-
-def _fits_on(face: _Face, t: float, width: float) -> bool:
-    return (
-        t - width / 2 >= END_MARGIN_M - 1e-9
-        and t + width / 2 <= face.wall.length - END_MARGIN_M + 1e-9
-    )
 
 
 def _place_above(
     req: WallObjectRequest,
     item: FloorItem,
-    faces: Sequence[_Face],
+    faces: Sequence[WallFace],
     doors: Sequence[Door],
     windows: Sequence[Window],
     walls: Sequence[Wall],
     floor: Sequence[FloorItem],
-    placed: Sequence[_Placed],
+    placed: Sequence[PlacedBox],
     base: float,
     wall_height: float,
-) -> tuple[_Face, float] | str:
+) -> tuple[WallFace, float] | str:
     width, depth, height = req.size
     centre = item.footprint.centroid
     ranked = []
     for face in faces:
         t, _ = face.wall.locate((centre.x, centre.y))
-        if not _fits_on(face, t, width):
+        if not fits_on(face, t, width):
             continue
-        band = _face_band(face, 10.0)
+        band = face_band(face, 10.0)
         if not band.contains(centre):
             continue
         ranked.append((_dist_to_face(face, centre), face, t))
@@ -408,7 +335,7 @@ def _place_above(
     hit = _clear(t - width / 2, t + width / 2, base, base + height, blocks)
     if hit is not None:
         return f"the wall above {item.id!r} is taken by {hit}"
-    if _hits_placed(_footprint(face, t, width, depth), base, base + height, placed):
+    if hits_placed(face_rect(face, t, width, depth), base, base + height, placed):
         return f"the wall above {item.id!r} is taken by another wall object"
     return face, t
 
@@ -419,15 +346,15 @@ FACED_SHIFT_M = 0.6  # how far along the wall a faced object may slide off the r
 def _place_faced(
     req: WallObjectRequest,
     looker: FloorItem,
-    faces: Sequence[_Face],
+    faces: Sequence[WallFace],
     doors: Sequence[Door],
     windows: Sequence[Window],
     walls: Sequence[Wall],
     floor: Sequence[FloorItem],
-    placed: Sequence[_Placed],
+    placed: Sequence[PlacedBox],
     base: float,
     wall_height: float,
-) -> tuple[_Face, float] | str:
+) -> tuple[WallFace, float] | str:
     """Where the ray from ``looker``'s centre along its front meets a wall face, or as near
     along that face as the object fits (up to ``FACED_SHIFT_M``)."""
     width, depth, height = req.size
@@ -451,33 +378,33 @@ def _place_faced(
         if abs(shift) > FACED_SHIFT_M + 1e-9:
             continue
         t = t0 + shift
-        if not _fits_on(face, t, width):
+        if not fits_on(face, t, width):
             continue
         if _clear(t - width / 2, t + width / 2, base, base + height, blocks) is not None:
             continue
-        if _hits_placed(_footprint(face, t, width, depth), base, base + height, placed):
+        if hits_placed(face_rect(face, t, width, depth), base, base + height, placed):
             continue
         return face, t
     return f"the wall {looker.id!r} looks at is taken where it looks"
 
 
-def _dist_to_face(face: _Face, point: Point) -> float:
+def _dist_to_face(face: WallFace, point: Point) -> float:
     _, off = face.wall.locate((point.x, point.y))
     return abs(off)
 
 
 def _place_free(
     req: WallObjectRequest,
-    faces: Sequence[_Face],
+    faces: Sequence[WallFace],
     doors: Sequence[Door],
     windows: Sequence[Window],
     walls: Sequence[Wall],
     floor: Sequence[FloorItem],
-    placed: Sequence[_Placed],
+    placed: Sequence[PlacedBox],
     base: float,
     wall_height: float,
     rng: np.random.Generator,
-) -> tuple[_Face, float] | str:
+) -> tuple[WallFace, float] | str:
     width, depth, height = req.size
     z0, z1 = base, base + height
     stretches = []
@@ -510,7 +437,7 @@ def _place_free(
         for k in range(1, steps + 1):
             candidates += [(a + b) / 2 - k * FREE_STEP_M, (a + b) / 2 + k * FREE_STEP_M]
         for t in candidates:
-            if _hits_placed(_footprint(face, t, width, depth), z0, z1, placed):
+            if hits_placed(face_rect(face, t, width, depth), z0, z1, placed):
                 continue
             return face, round(t, 3) if _fits_within(round(t, 3), width, a, b) else t
     return f"every free stretch of wall {width:.2f} m wide is taken by other wall objects"

@@ -109,13 +109,20 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                     if new_weight < weight - 1e-9 and share >= CUT_OFF_SHARE:
                         continue  # soft constraints give way only to a door cut off
                     new_share, _ = meter.pockets(prep.footprints(trial))
-                    # the door reconnected first, then the constraints kept, then the share
-                    key = (new_share >= CUT_OFF_SHARE, new_weight, new_share)
+                    # while the door is cut off, the largest share; among the moves that
+                    # reconnect it, the one that keeps the most constraints
+                    reconnected = new_share >= CUT_OFF_SHARE
+                    key = (
+                        (True, new_weight, new_share)
+                        if reconnected
+                        else (False, new_share, new_weight)
+                    )
                     if new_share > share + 1e-6 and (best is None or key > best[0]):
                         best = (key, trial)
         if best is None:
             break
-        (_, weight, share), poses = best
+        _, poses = best
+        weight = satisfied_weight(prep, prep.metres(poses))
         share, pocket = meter.pockets(prep.footprints(poses))
         if share >= TARGET_SHARE:
             break

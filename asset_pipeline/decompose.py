@@ -11,8 +11,8 @@ table's legs and top, a shelf's boards) becomes one hull as it is, when there ar
 tried only when the one before failed:
 
 1. ``coacd``: the caller's :class:`CoacdParams`, within ``timeout_s``;
-2. ``coacd_coarse``: :meth:`CoacdParams.coarse` (threshold at least 0.1, resolution <= 1000,
-   preprocess resolution <= 30, MCTS 10 nodes x 50 iterations, depth <= 2, <= 8 hulls), within
+2. ``coacd_coarse``: :meth:`CoacdParams.coarse` (threshold at least 0.2, resolution <= 500,
+   preprocess resolution <= 20, MCTS 6 nodes x 15 iterations, depth <= 2, <= 8 hulls), within
    ``timeout_s`` again; skipped when the settings are already that coarse;
 3. ``convex_hull``: the single convex hull of the mesh, computed in process (always works).
 
@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -41,46 +42,75 @@ import trimesh
 
 @dataclass(frozen=True)
 class CoacdParams:
-    """CoACD settings (see the CoACD README; defaults are CoACD's, with a hull cap).
+    """CoACD settings (see the CoACD README); the defaults are the ``default`` preset.
 
     threshold: concavity threshold (0.01-1); lower gives more, finer hulls.
+    preprocessed_threshold: the threshold for meshes CoACD must first remesh (not watertight:
+        scans, open surfaces); None for ``threshold``. The remesh is only as fine as its voxel
+        grid (1/25 of the size at resolution 25), so a finer threshold there buys time, not
+        detail.
     max_convex_hull: most hulls after merging; -1 for no limit.
-    preprocess_resolution: voxel resolution of the manifold preprocessing (20-100).
+    preprocess_resolution: voxel resolution of the manifold preprocessing (20-100); the
+        remeshed surface CoACD then cuts grows with its square (48k triangles at 40 for a
+        soup can), and so does the time.
     resolution: samples per cut evaluation (1000-10000); lower is faster and coarser.
     mcts_nodes: children per node of the Monte Carlo tree search over cut planes.
     mcts_iterations: search iterations per cut (60-2000).
     mcts_max_depth: search depth (2-7).
     timeout_s: wall-clock limit of one CoACD run, seconds (the child is killed after it).
     seed: random seed (fixed for reproducible hulls).
+
+    The defaults trade CoACD's own search (preprocessing at 50, 2000 samples, 20 nodes x 150
+    iterations x depth 3: a minute or more of CPU per scanned mesh) for a shallower, narrower
+    search on a coarser preprocessing grid, keeping CoACD's threshold (0.05) for watertight
+    meshes, whose thin walls (boxes, bowls, plates) need it; see ``scripts/bench_assets.py``
+    for the measured time and hull volume ratios. The ``fine`` preset of
+    :mod:`asset_pipeline.manage` keeps CoACD's search settings.
     """
 
     threshold: float = 0.05
+    preprocessed_threshold: float | None = 0.1
     max_convex_hull: int = 16
-    preprocess_resolution: int = 50
-    resolution: int = 2000
-    mcts_nodes: int = 20
-    mcts_iterations: int = 150
-    mcts_max_depth: int = 3
+    preprocess_resolution: int = 25
+    resolution: int = 800
+    mcts_nodes: int = 8
+    mcts_iterations: int = 25
+    mcts_max_depth: int = 2
     timeout_s: float = 120.0
     seed: int = 0
 
     def coarse(self) -> CoacdParams:
-        """The cheaper settings of the second attempt."""
+        """The cheaper settings of the second attempt (a run that timed out gets a search
+        several times cheaper)."""
+        coarse_threshold = min(1.0, max(self.threshold, 0.2))
         return replace(
             self,
-            threshold=min(1.0, max(self.threshold, 0.1)),
+            threshold=coarse_threshold,
+            preprocessed_threshold=(
+                None
+                if self.preprocessed_threshold is None
+                else max(self.preprocessed_threshold, coarse_threshold)
+            ),
             max_convex_hull=8 if self.max_convex_hull <= 0 else min(self.max_convex_hull, 8),
-            preprocess_resolution=min(self.preprocess_resolution, 30),
-            resolution=min(self.resolution, 1000),
-            mcts_nodes=min(self.mcts_nodes, 10),
-            mcts_iterations=min(self.mcts_iterations, 50),
+            preprocess_resolution=min(self.preprocess_resolution, 20),
+            resolution=min(self.resolution, 500),
+            mcts_nodes=min(self.mcts_nodes, 6),
+            mcts_iterations=min(self.mcts_iterations, 15),
             mcts_max_depth=min(self.mcts_max_depth, 2),
         )
+
+    def threshold_for(self, preprocess_mode: str) -> float:
+        """The concavity threshold used with ``preprocess_mode`` ("on": remeshed first)."""
+        if preprocess_mode == "on" and self.preprocessed_threshold is not None:
+            return self.preprocessed_threshold
+        return self.threshold
 
     def run_kwargs(self, preprocess_mode: str) -> dict:
         """Keyword arguments of ``coacd.run_coacd``."""
         kwargs = asdict(self)
         kwargs.pop("timeout_s")
+        kwargs.pop("preprocessed_threshold")
+        kwargs["threshold"] = self.threshold_for(preprocess_mode)
         kwargs["preprocess_mode"] = preprocess_mode
         return kwargs
 
@@ -112,7 +142,7 @@ CONVEX_TOL_M = 0.001
 def decompose(mesh: trimesh.Trimesh, params: CoacdParams, manifold: bool) -> Decomposition:
     """Convex bodies as they are, the rest through the CoACD fallback chain."""
     convex, rest = [], []
-    for faces in _bodies(mesh):
+    for faces in bodies(mesh):
         points = np.asarray(mesh.vertices)[np.unique(mesh.faces[faces])]
         centroids = np.asarray(mesh.triangles_center)[faces]
         (convex if _is_convex(points, centroids) else rest).append(faces)
@@ -140,7 +170,7 @@ def decompose(mesh: trimesh.Trimesh, params: CoacdParams, manifold: bool) -> Dec
     return _chain(mesh, params, manifold)
 
 
-def _bodies(mesh: trimesh.Trimesh) -> list[np.ndarray]:
+def bodies(mesh: trimesh.Trimesh) -> list[np.ndarray]:
     """Face indices of each body (faces connected through shared vertices)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
@@ -182,11 +212,15 @@ def _chain(mesh: trimesh.Trimesh, params: CoacdParams, manifold: bool) -> Decomp
         )
     for method, settings in tries:
         start = time.perf_counter()
+        cpu_start = _children_cpu_seconds()
         hulls, status, reason = _run_child(mesh, settings, mode)
         record = {
             "method": method,
             "status": status,
             "seconds": round(time.perf_counter() - start, 3),
+            # CPU time of the child (all its threads): unlike wall time, not inflated by
+            # other work on a busy machine.
+            "cpu_seconds": round(_children_cpu_seconds() - cpu_start, 3),
             "params": settings.run_kwargs(mode) | {"timeout_s": settings.timeout_s},
         }
         if reason:
@@ -240,6 +274,12 @@ def _failure_phrase(attempt: dict) -> str | None:
     if attempt["status"] == "error":
         return attempt.get("reason") or "CoACD failed"
     return None
+
+
+def _children_cpu_seconds() -> float:
+    """User + system CPU seconds of this process's finished (waited-for) child processes."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 def _run_child(

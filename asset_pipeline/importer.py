@@ -4,7 +4,9 @@
 normalise (Z up, front +X, optional uniform scale, origin at the footprint centre of the
 bottom) -> repair (weld, drop degenerate/duplicate faces, consistent winding) -> CoACD in a
 child process with a fallback chain -> hull post-processing (vertex cap, pull inside the
-visual, slivers to boxes) -> support surfaces -> metadata (category table, sidecar).
+visual, slivers to boxes) -> support surfaces -> metadata (category table, sidecar) and the
+mass, from the category's material and the mesh's material volume, never from the hulls (see
+:mod:`asset_pipeline.physical`; ``report["physical"]["mass_derivation"]`` says how).
 
 The report's ``degraded`` / ``degraded_reason`` say whether CoACD's result was replaced by a
 fallback (coarser settings or the single convex hull) because CoACD was unavailable, crashed
@@ -140,19 +142,21 @@ def import_asset(
     else:
         category, category_source = physical.DEFAULT_CATEGORY, "default"
     info = physical.category_info(category, frame.size)
-    density = annotate.sidecar_number(sidecar, "density_kg_m3", sidecar_where)
-    density = density if density is not None else info.density_kg_m3
     given = options.mass_kg
     if given is None:
         given = annotate.sidecar_number(sidecar, "mass_kg", sidecar_where)
-    mass, mass_source, mass_warnings = physical.resolve_mass(given, density, volume, info)
+    density = annotate.sidecar_number(sidecar, "density_kg_m3", sidecar_where)
+    massed = physical.resolve_mass(info, repaired.physics, volume, given=given, density=density)
+    mass = massed.mass_kg
+    lap("mass")
     derived = {
         "id": asset_id,
         "category": category,
         "description": annotate.describe(category),
         "size": list(frame.size),
         "mass_kg": mass,
-        "density_kg_m3": density,
+        # The density of the collision volume that gives this mass (AssetMeta's meaning).
+        "density_kg_m3": density if density is not None else mass / volume,
         "friction": info.friction,
         "placement": list(info.placement),
         "upright": info.upright,
@@ -173,13 +177,14 @@ def import_asset(
     meta, meta_warnings = annotate.build_meta(derived, sidecar, explicit, sidecar_where)
     lap("annotate")
 
-    warnings = loaded.warnings + mass_warnings + meta_warnings
+    warnings = loaded.warnings + massed.warnings + meta_warnings
     if decomposition.degraded:
         warnings.append(f"degraded decomposition: {decomposition.degraded_reason}")
     report = {
         "asset_id": asset_id,
         "source": {
             "file": str(path),
+            "sha256": hashlib.sha256(path.read_bytes()).hexdigest(),
             "format": loaded.format,
             "parts": len(loaded.parts),
             "vertices": loaded.vertex_count,
@@ -211,8 +216,10 @@ def import_asset(
             "category_known": info.known,
             "density_kg_m3": meta.density_kg_m3,
             "mass_kg": meta.mass,
-            "mass_source": "given" if options.mass_kg is not None else mass_source,
+            "mass_source": massed.source,
             "mass_range_kg": list(info.mass_range_kg),
+            "material": info.material,
+            "mass_derivation": massed.derivation,
             "upright": info.upright,
             "friction": meta.friction,
         },

@@ -8,12 +8,20 @@ final rename stays on one file system) and then swapped in. Adding to or removin
 existing library writes new asset folders first and commits by replacing ``library.json`` in
 one rename. Invalid input is rejected before anything touches the disk; a failure (even a
 kill) leaves the library as its last committed index describes it.
+
+PNG images (textures, thumbnails) are content-addressed: each distinct image is written once to
+``LIB/.blobs/<sha256>.png`` and hard-linked into every asset folder that uses it, so a texture
+shared by hundreds of procedural assets takes its bytes once on disk. Where a link cannot be
+made (another file system, no hard links) the file is written as a copy. Blobs no asset links
+any more are swept away with the folders the index no longer names.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import fcntl
+import hashlib
 import itertools
 import json
 import os
@@ -31,6 +39,8 @@ from holomj.spec.base import read_json, validate_model
 
 INDEX_FILE = "library.json"
 META_FILE = "asset.json"
+BLOB_DIR = ".blobs"  # content-addressed images, hard-linked into the asset folders
+SHARED_SUFFIXES = (".png",)
 
 _SAFE_PART = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.\-]*$")
 _FOLDER_UNSAFE = re.compile(r"[^A-Za-z0-9_.\-]")
@@ -99,7 +109,7 @@ def write_library(
 
     def fill(tmp: Path) -> None:
         for bundle in bundles:
-            _write_bundle(tmp, bundle)
+            _write_bundle(tmp, bundle, tmp / BLOB_DIR)
         _write_file(tmp / INDEX_FILE, index_bytes(index))
 
     replace_folder(root, fill)
@@ -138,7 +148,8 @@ def add_assets(root: Path | str, bundles: Sequence[AssetBundle]) -> Path:
         try:
             for bundle in checked:
                 replace_folder(
-                    root / bundle.folder_name, lambda tmp, b=bundle: _fill_bundle(tmp, b)
+                    root / bundle.folder_name,
+                    lambda tmp, b=bundle: _fill_bundle(tmp, b, root / BLOB_DIR),
                 )
             _commit_index(root, new_index)
         except BaseException:
@@ -172,7 +183,8 @@ def remove_assets(root: Path | str, asset_ids: Sequence[str]) -> list[str]:
 def sweep_unindexed(root: Path, index: LibraryIndex) -> list[str]:
     """Delete asset folders and leftovers the index does not name (crash debris, removed assets).
 
-    Hidden entries (``.cache``, ``.lock``) and files are kept.
+    Hidden entries (``.cache``, ``.lock``) and files are kept, and so are the blobs some asset
+    folder still links (:data:`BLOB_DIR`); the others are deleted.
     """
     named = set(index.assets.values())
     removed = []
@@ -185,6 +197,11 @@ def sweep_unindexed(root: Path, index: LibraryIndex) -> list[str]:
         ):
             shutil.rmtree(entry, ignore_errors=True)
             removed.append(entry.name)
+    store = root / BLOB_DIR
+    if store.is_dir():
+        for blob in sorted(store.iterdir()):
+            if blob.is_file() and blob.stat().st_nlink <= 1:
+                blob.unlink(missing_ok=True)
     return removed
 
 
@@ -242,12 +259,31 @@ def _free_folder(base: str, taken: set[str]) -> str:
     raise AssertionError("unreachable")
 
 
-def _fill_bundle(folder: Path, bundle: AssetBundle) -> None:
+def _fill_bundle(folder: Path, bundle: AssetBundle, store: Path) -> None:
     for rel, data in sorted(bundle.files.items()):
         target = folder / rel
         target.parent.mkdir(parents=True, exist_ok=True)
-        _write_file(target, data)
+        if target.suffix.lower() in SHARED_SUFFIXES:
+            _link_or_write(target, data, store)
+        else:
+            _write_file(target, data)
     _write_file(folder / META_FILE, meta_bytes(bundle.meta))
+
+
+def _link_or_write(target: Path, data: bytes, store: Path) -> None:
+    """Hard-link ``target`` to the blob of ``data`` in ``store`` (writing the blob first if it
+    is new); write ``target`` as a copy where links are not possible."""
+    blob = store / f"{hashlib.sha256(data).hexdigest()}{target.suffix.lower()}"
+    try:
+        store.mkdir(exist_ok=True)
+        if not blob.is_file() or blob.stat().st_size != len(data):
+            blob.unlink(missing_ok=True)
+            _write_file(blob, data)
+        os.link(blob, target)
+    except OSError as err:
+        if err.errno not in (errno.EXDEV, errno.EPERM, errno.EMLINK, errno.ENOTSUP, errno.EACCES):
+            raise
+        _write_file(target, data)
 
 
 def _checked_bundles(bundles: Iterable[AssetBundle], existing: dict[str, str]) -> list[AssetBundle]:
@@ -315,10 +351,10 @@ def _safe_relpath(rel: str, where: str) -> str:
     return str(PurePosixPath(*parts))
 
 
-def _write_bundle(library: Path, bundle: AssetBundle) -> None:
+def _write_bundle(library: Path, bundle: AssetBundle, store: Path) -> None:
     folder = library / bundle.folder_name
     folder.mkdir()
-    _fill_bundle(folder, bundle)
+    _fill_bundle(folder, bundle, store)
 
 
 def _write_file(path: Path, data: bytes) -> None:

@@ -44,26 +44,57 @@ MESH_SUFFIXES = (".glb", ".gltf", ".obj", ".stl", ".ply")
 COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg")
 # Collision meshes shipped beside real assets (V-HACD, LIBERO): not assets themselves.
 _COLLISION_STEMS = re.compile(r"(_vhacd|_col|_collision|_coll)$", re.IGNORECASE)
-_GENERIC_STEMS = {"textured", "model", "mesh", "scene", "untitled", "object", "base"}
+# Path components that say nothing about the asset (scanner, exporter and dataset layouts):
+# an id comes from the nearest component that is not one of these.
+_GENERIC_NAMES = frozenset(
+    {
+        "textured", "texture", "textures", "model", "models", "mesh", "meshes", "scene",
+        "untitled", "object", "objects", "base", "obj", "glb", "gltf", "fbx", "source",
+        "sources", "src", "tsdf", "poisson", "visual", "visuals", "collision", "export",
+        "exports", "output", "default", "final", "asset", "assets", "data", "file", "files",
+        "geometry", "raw", "processed", "merged", "clean", "cleaned", "simplified", "lod",
+        "urdf", "sdf", "mjcf", "normalized", "normalised", "optimized", "optimised",
+        "model_normalized", "model_watertight",
+    }
+)  # fmt: skip
+# Generic by pattern: scan resolutions (google_16k, google_512k, 4k), levels of detail
+# (lod0), and bare runs of digits and separators (0001, 2024-01).
+_GENERIC_PATTERN = re.compile(
+    r"(google_\d+k|\d+k|lod_?\d*|[\d_.\-]*|untitled[_\-]?\d*|mesh[_\-]?\d*|model[_\-]?\d*)",
+    re.IGNORECASE,
+)
 CACHE_DIR = ".cache"
 PENDING_DIR = "pending"  # inside CACHE_DIR: degraded results on their way to the library
 PENDING_MAX_AGE_S = 3600.0  # older pending folders are debris of killed runs
 DERIVATION_FILE = "derivation.json"
+MAX_ID_TEXT = 100  # ids may have 128 characters: room for a "-N" suffix
 
 
-PRESETS: dict[str, dict[str, float | int]] = {
+PRESETS: dict[str, dict[str, float | int | None]] = {
     # Seconds per object: previews, tests, CI.
     "fast": {
         "threshold": 0.3,
+        "preprocessed_threshold": None,
         "max_convex_hull": 4,
         "preprocess_resolution": 20,
         "resolution": 500,
         "mcts_iterations": 20,
     },
-    # CoacdParams' own defaults.
+    # CoacdParams' own defaults: seconds per object, tens for dense scans.
     "default": {},
-    # Closer hulls for contact-rich manipulation; minutes per object.
-    "fine": {"threshold": 0.03, "max_convex_hull": 32, "mcts_iterations": 300, "mcts_max_depth": 4},
+    # Closer hulls for contact-rich manipulation: CoACD's own search settings with a finer
+    # threshold and more hulls; minutes per object.
+    "fine": {
+        "threshold": 0.03,
+        "preprocessed_threshold": None,
+        "max_convex_hull": 32,
+        "preprocess_resolution": 50,
+        "resolution": 2000,
+        "mcts_nodes": 20,
+        "mcts_iterations": 300,
+        "mcts_max_depth": 4,
+        "timeout_s": 900.0,
+    },
 }
 
 
@@ -75,7 +106,10 @@ def coacd_params(preset: str = "default", **overrides: float | int | None) -> An
         raise InputError(
             f"unknown preset {preset!r}", where="--preset", fix=f"use one of: {', '.join(PRESETS)}"
         )
-    values = {**PRESETS[preset], **{k: v for k, v in overrides.items() if v is not None}}
+    given = {k: v for k, v in overrides.items() if v is not None}
+    if "threshold" in given and "preprocessed_threshold" not in given:
+        given["preprocessed_threshold"] = None  # a threshold asked for holds for every mesh
+    values = {**PRESETS[preset], **given}
     return dataclasses.replace(CoacdParams(), **values)
 
 
@@ -85,6 +119,7 @@ class ImportJob:
 
     path: Path
     asset_id: str
+    id_note: str | None = None  # why the id is not the one the file name gives, if so
 
 
 @dataclass
@@ -103,6 +138,7 @@ class JobOutcome:
     degraded: bool = False
     degraded_reason: str | None = None
     entry: str | None = None  # folder under the cache root holding the bundle to commit
+    id_note: str | None = None  # see ImportJob.id_note
 
 
 @dataclass
@@ -165,32 +201,134 @@ def find_mesh_files(paths: Sequence[Path]) -> list[Path]:
 
 
 def asset_id_for(path: Path) -> str:
-    """An asset id from a file name; generic names (``textured.obj``) use their folder's."""
-    stem = path.stem
-    if stem.lower() in _GENERIC_STEMS or re.fullmatch(r"[\d_\-]+", stem):
-        stem = path.parent.name or stem
-    stem = re.sub(r"_(1k|2k|4k)$", "", stem)
-    ident = re.sub(r"[^A-Za-z0-9_.\-]+", "_", stem).strip("_.-")
-    return ident or "asset"
+    """An asset id from the nearest meaningful component of ``path``.
+
+    The file name, else its folder's name, else the next folder up: generic components
+    (``textured.obj``, ``google_16k/``, ``meshes/``, ``tsdf/``, ``model.glb``, bare numbers;
+    see :data:`_GENERIC_NAMES`) are skipped, so YCB's ``002_master_chef_can/google_16k/
+    textured.obj`` is ``002_master_chef_can``. A texture-resolution suffix (``_1k``) is
+    dropped; other characters not allowed in an id become ``_``. When every component is
+    generic, the file name is used anyway.
+    """
+    path = Path(path)
+    names = [path.stem, *(p.name for p in path.parents if p.name)]
+    for name in names:
+        ident = _id_text(name)
+        if ident and not _is_generic(ident):
+            return ident
+    return _id_text(path.stem) or "asset"
 
 
-def plan_jobs(paths: Sequence[Path], asset_id: str | None = None) -> list[ImportJob]:
-    """Jobs for the given files and folders, with unique ids (``_2``, ``_3`` on clashes)."""
+def _id_text(name: str) -> str:
+    """``name`` as id text: resolution suffix dropped, odd characters as ``_``."""
+    name = re.sub(r"[_\-](1k|2k|4k|8k)$", "", name, flags=re.IGNORECASE)
+    return re.sub(r"[^A-Za-z0-9_.\-]+", "_", name).strip("_.-")[:MAX_ID_TEXT].rstrip("_.-")
+
+
+def _is_generic(name: str) -> bool:
+    """Whether a path component says nothing about the asset."""
+    return name.lower() in _GENERIC_NAMES or bool(_GENERIC_PATTERN.fullmatch(name))
+
+
+@dataclass(frozen=True)
+class ExistingAsset:
+    """An asset already in the library: where its files came from, when it says so."""
+
+    asset_id: str
+    source_file: str | None = None
+    source_sha256: str | None = None
+
+    def same_source(self, path: Path, sha256: str) -> bool:
+        """Whether ``path`` (with bytes hashing to ``sha256``) is this asset's source file."""
+        if self.source_sha256 is not None and self.source_sha256 == sha256:
+            return True
+        if self.source_file is None:
+            return False
+        try:
+            return Path(self.source_file).resolve() == Path(path).resolve()
+        except OSError:
+            return False
+
+    def describe(self) -> str:
+        """A few words on where the asset came from, for messages."""
+        return f"from {self.source_file}" if self.source_file else "not imported from a file"
+
+
+def existing_assets(root: Path) -> dict[str, ExistingAsset]:
+    """The assets of the library at ``root`` (none when there is no library yet), with the
+    source file and hash their ``derivation.json`` records."""
+    from holomj.library.store import AssetLibrary
+
+    if not (Path(root) / "library.json").is_file():
+        return {}
+    library = AssetLibrary.open(root)
+    found = {}
+    for asset_id in library.ids():
+        source_file = source_sha = None
+        try:
+            derivation = json.loads((library.get(asset_id).root / DERIVATION_FILE).read_text())
+            source = derivation.get("source") or {}
+            source_file, source_sha = source.get("file"), source.get("sha256")
+        except (HolomjError, OSError, ValueError, AttributeError):
+            pass  # a builtin or procedural asset: no derivation of an import
+        found[asset_id] = ExistingAsset(asset_id, source_file, source_sha)
+    return found
+
+
+def plan_jobs(
+    paths: Sequence[Path],
+    asset_id: str | None = None,
+    existing: dict[str, ExistingAsset] | None = None,
+) -> list[ImportJob]:
+    """Jobs for the given files and folders, with ids that never silently reuse another's.
+
+    Ids come from :func:`asset_id_for` (or ``asset_id`` for one file). An id already planned
+    in this run, or held in the library (``existing``, see :func:`existing_assets`) by an
+    asset imported from another file, gets the first free suffix ``-2``, ``-3``...; the job's
+    ``id_note`` says so. The library's asset of the *same* file (same path or same bytes)
+    keeps its id: re-importing a file updates its asset. An explicit ``asset_id`` held by
+    another asset is an :class:`~holomj.errors.InputError` (nothing is replaced).
+    """
     files = find_mesh_files(paths)
     if not files:
         raise InputError("no mesh files found", where=", ".join(str(p) for p in paths))
     if asset_id is not None and len(files) > 1:
         raise InputError("--id names one asset but several files were given", where="--id")
+    existing = existing or {}
     jobs: list[ImportJob] = []
     used: set[str] = set()
     for path in files:
         base = asset_id or asset_id_for(path)
+        digest = hashlib.sha256(path.read_bytes()).hexdigest() if existing else ""
+
+        def taken(ident: str, path: Path = path, digest: str = digest) -> bool:
+            held = existing.get(ident)
+            return ident in used or (held is not None and not held.same_source(path, digest))
+
+        if asset_id is not None and taken(asset_id):
+            raise InputError(
+                f"asset id {asset_id!r} is already in the library "
+                f"({existing[asset_id].describe()})",
+                where="--id",
+                fix=f"choose another --id, or remove the asset first: "
+                f"holomj assets remove {asset_id}",
+            )
         ident, n = base, 1
-        while ident in used:
+        while taken(ident):
             n += 1
-            ident = f"{base}_{n}"
+            ident = f"{base}-{n}"
+        note = None
+        if ident != base:
+            where = (
+                "by another file of this import"
+                if base in used
+                else f"in the library ({existing[base].describe()})"
+            )
+            note = f"id {base!r} is taken {where}; imported as {ident!r}"
+        elif base in existing:
+            note = f"replaces {base!r}, imported before from the same file"
         used.add(ident)
-        jobs.append(ImportJob(path=path, asset_id=ident))
+        jobs.append(ImportJob(path=path, asset_id=ident, id_note=note))
     return jobs
 
 
@@ -287,7 +425,7 @@ def process_job(
     cached as final only with it, else stored in a pending folder (see the module docstring).
     """
     start = time.perf_counter()
-    outcome = JobOutcome(path=str(job.path), asset_id=job.asset_id, ok=False)
+    outcome = JobOutcome(path=str(job.path), asset_id=job.asset_id, ok=False, id_note=job.id_note)
     try:
         key = cache_key(job.path, options)
         outcome.cache_key = key
@@ -400,7 +538,11 @@ def run_imports(
                 outcome = future.result()
             except BrokenProcessPool:
                 outcome = JobOutcome(
-                    str(job.path), job.asset_id, ok=False, error="worker process died"
+                    str(job.path),
+                    job.asset_id,
+                    ok=False,
+                    error="worker process died",
+                    id_note=job.id_note,
                 )
             finish(job, outcome)
     summary.outcomes.sort(key=lambda o: o.path)

@@ -2,7 +2,8 @@
 
 For every registered category and each of its default-library variants: the time to generate
 and assemble the asset in memory (target: under 0.2 s per asset); then the time and size of a
-full default-library build on disk. Writes JSON::
+full default-library build on disk (shared texture images are hard links, counted once), and
+its collider audit (the largest visual-outside-collider gap, limit 5 mm). Writes JSON::
 
     python scripts/bench_synthesis.py --out bench_results/synthesis.json [--repeat 1]
 """
@@ -17,6 +18,9 @@ import tempfile
 import time
 from pathlib import Path
 
+from build_default_library import disk_bytes  # sibling module in scripts/
+
+from asset_pipeline.collider_audit import GAP_LIMIT_M
 from asset_pipeline.procedural import (
     CATEGORIES,
     build_default_library,
@@ -33,19 +37,21 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=1, help="Timed builds per asset.")
     args = parser.parse_args()
     per_asset: list[dict[str, object]] = []
+    gaps: list[tuple[float, str]] = []
     for asset_id, category, size, seed in default_variants():
         best = float("inf")
         for _ in range(max(1, args.repeat)):
             start = time.perf_counter()
-            generate_asset(category, asset_id, size, seed)
+            bundle = generate_asset(category, asset_id, size, seed)
             best = min(best, time.perf_counter() - start)
         per_asset.append({"asset": asset_id, "category": category, "seconds": round(best, 5)})
+        gaps.append((bundle.meta.collider_gap_m or 0.0, asset_id))
     times = [float(a["seconds"]) for a in per_asset]  # type: ignore[arg-type]
     with tempfile.TemporaryDirectory() as tmp:
         start = time.perf_counter()
         root = build_default_library(Path(tmp) / "library")
         build_s = time.perf_counter() - start
-        size_bytes = sum(p.stat().st_size for p in root.rglob("*") if p.is_file())
+        files, size_bytes = disk_bytes(root)
     kinds: dict[str, int] = {}
     for info in CATEGORIES.values():
         kinds[info.kind] = kinds.get(info.kind, 0) + 1
@@ -64,6 +70,12 @@ def main() -> None:
         },
         "library_build_s": round(build_s, 3),
         "library_bytes": size_bytes,
+        "library_files": files,
+        "collider_gap_mm": {
+            "worst": round(1000 * max(gaps)[0], 1),
+            "worst_asset": max(gaps)[1],
+            "over_limit": [a for g, a in gaps if g > GAP_LIMIT_M],
+        },
         "slowest": sorted(per_asset, key=lambda a: -float(a["seconds"]))[:10],  # type: ignore[arg-type]
     }
     args.out.parent.mkdir(parents=True, exist_ok=True)

@@ -29,9 +29,15 @@ from holomj.spec.assets import ASSET_SCHEMA_VERSION
 
 
 def _source_hash() -> str:
-    """sha256 over the generator sources, the asset schema and numpy's version (its RNG)."""
+    """sha256 over the generator sources, the asset schema and numpy's version (its RNG).
+
+    The generators' sources include the modules outside this package whose output lands in
+    the assets: the collider audit (``collider_gap_m``) and the texture patterns.
+    """
     digest = hashlib.sha256(f"schema {ASSET_SCHEMA_VERSION} numpy {np.__version__}\0".encode())
-    for path in sorted(Path(__file__).parent.glob("*.py")):
+    here = Path(__file__).parent
+    outside = [here.parent / "collider_audit.py", here.parents[1] / "holomj/mjcf/textures.py"]
+    for path in [*sorted(here.glob("*.py")), *outside]:
         digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
     return digest.hexdigest()[:12]
 

@@ -43,6 +43,7 @@ from asset_pipeline.procedural.kit import (
 )
 from asset_pipeline.procedural.parts import Box, Material, Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
+from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe, Sphere
 
 Rng = np.random.Generator
@@ -319,10 +320,15 @@ def _framed(size: Vec3, rng: Rng, face: Material) -> tuple[list[Part], str]:
     x0, x1 = -0.5 * d, 0.5 * d
     parts: list[Part] = [
         block((x0, x1 - 0.01), (-hw + f, hw - f), (f, h - f), face),
-        block((x0, x1), (-hw, hw), (0.0, f), frame),
-        block((x0, x1), (-hw, hw), (h - f, h), frame),
-        block((x0, x1), (-hw, -hw + f), (f, h - f), frame),
-        block((x0, x1), (hw - f, hw), (f, h - f), frame),
+        *tagged(
+            "frame",
+            [
+                block((x0, x1), (-hw, hw), (0.0, f), frame),
+                block((x0, x1), (-hw, hw), (h - f, h), frame),
+                block((x0, x1), (-hw, -hw + f), (f, h - f), frame),
+                block((x0, x1), (hw - f, hw), (f, h - f), frame),
+            ],
+        ),
     ]
     return parts, frame.words
 
@@ -386,9 +392,16 @@ def floor_lamp(size: Vec3, rng: Rng) -> Design:
     base_r = clamp(uniform(rng, 0.55, 0.8) * r, 0.11, r)
     top_r = r * (uniform(rng, 0.55, 0.75) if cone else 1.0)
     parts: list[Part] = [
-        Cylinder((0.0, 0.0, 0.015), base_r, 0.015, metal),
-        Cylinder((0.0, 0.0, 0.5 * (h - shade_h + 0.03)), 0.012, 0.5 * (h - shade_h - 0.03), metal),
-        Lathe((0.0, 0.0, h - shade_h), ((r, 0.0), (top_r, shade_h)), shade_mat),
+        *tagged("base", [Cylinder((0.0, 0.0, 0.015), base_r, 0.015, metal)]),
+        *tagged(
+            "pole",
+            [
+                Cylinder(
+                    (0.0, 0.0, 0.5 * (h - shade_h + 0.03)), 0.012, 0.5 * (h - shade_h - 0.03), metal
+                )
+            ],
+        ),
+        *tagged("shade", [Lathe((0.0, 0.0, h - shade_h), ((r, 0.0), (top_r, shade_h)), shade_mat)]),
     ]
     return Design(
         tuple(parts),

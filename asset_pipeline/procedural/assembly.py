@@ -4,18 +4,48 @@ The design may be drawn in any frame; assembly moves it so that the bounding box
 visual meshes is centred on the origin in X and Y with its bottom at z = 0 (the asset frame of
 holomj), merges the parts of each material into one OBJ, and derives colliders, support
 surfaces, size and density.
+
+Textures: the parts of a wood, fabric, velvet, leather, marble, tile, brick, carpet or concrete
+material get box-projected UVs in metres and the matching procedural pattern (see
+:mod:`.textures`), tinted so that it averages to the material's colour (the visual part's
+``rgba`` is that tint: the colour divided by the pattern's mean, capped at 1);
+``AssetDesign.textured=False`` or a material with ``pattern="plain"`` keeps plain colours.
+
+Colliders: every collider lies inside the visual, and the colliders must cover the visual
+surface: where a part's own colliders (or a visual-only part's lack of them) leave more than
+:data:`COVER_TARGET_M` of it outside every collider, assembly gives that part its colliders
+back (a visual-only part) or the convex hull of its mesh (a convex part). The remaining gap
+(:mod:`asset_pipeline.collider_audit`) is recorded as ``collider_gap_m``.
 """
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
+from asset_pipeline.collider_audit import ColliderGap, collider_gap, mesh_gaps, round_gap
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.procedural.obj_writer import merge_meshes, obj_bytes, rounded
-from asset_pipeline.procedural.parts import Collider, Material, Part, Surface, Vec3
+from asset_pipeline.procedural.parts import (
+    Collider,
+    Material,
+    Mesh,
+    Part,
+    Surface,
+    Vec3,
+    hull_collider,
+)
+from asset_pipeline.procedural.textures import (
+    pattern_of,
+    pattern_png,
+    texture_file,
+    textured_mesh,
+    tinted,
+)
 from holomj.spec.assets import AssetMeta, CollisionPart, SupportSurface, VisualPart
 from holomj.spec.base import validate_model
 
@@ -37,10 +67,14 @@ class AssetDesign:
     parts: tuple[Part, ...]
     attributes: tuple[tuple[str, str], ...] = ()  # honoured (colour, material, shape, style)
     proxy: bool = False  # a stand-in from a parametric family (asset_pipeline.procedural.proxies)
+    textured: bool = True  # False: every material a plain colour, no textures
 
 
 CLEARANCE = 0.05  # free height required above every support surface
 PROUD = 1e-3  # parts standing less than this above a surface (tape, a screen) do not block it
+COVER_TARGET_M = 0.003  # visual surface a part's colliders may leave uncovered before a fix
+MIN_HULL_VERTICES = 64  # MuJoCo's default maxhullvert; raised for assets with bigger hulls
+_MAX_CONVEX_CHECK = 512  # meshes with more vertices are not tried as convex hulls
 
 
 # Small objects that only make sense standing (spawn-and-drop rejects them tipped over).
@@ -63,46 +97,63 @@ UPRIGHT_CATEGORIES = frozenset(
 
 
 def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBundle:
-    """Build the bundle (metadata + OBJ files) of ``design``.
+    """Build the bundle (metadata + OBJ files + textures) of ``design``.
 
     With ``expected_size`` the visual bounding box must match it within 1 mm. Every support
     surface must have :data:`CLEARANCE` of free space above it (no part's bounds reach into
     the prism over its polygon); a violation is a bug in the design and raises ValueError.
     """
     parts = centred_parts(design.parts)
-    by_material: dict[str, tuple[Material, list]] = {}
+    by_material: dict[str, tuple[Material, list[Mesh]]] = {}
     for part in parts:
         mesh = part.mesh()
         if mesh is not None:
             by_material.setdefault(part.material.name, (part.material, []))[1].append(mesh)
     files: dict[str, bytes] = {}
     visual = []
-    all_vertices = []
+    visual_meshes: list[Mesh] = []
     for name in sorted(by_material):
         material, meshes = by_material[name]
+        pattern = pattern_of(material) if design.textured else None
+        if pattern is not None:
+            meshes = [textured_mesh(m, pattern) for m in meshes]
         mesh = rounded(merge_meshes(meshes))
-        all_vertices.append(mesh.vertices)
+        visual_meshes.append(mesh)
         filename = f"{name}.obj"
         files[filename] = obj_bytes(mesh, comment=f"{design.id}: {name} ({SOURCE}, {LICENSE})")
+        rgba = material.rgba
+        texture = None
+        if pattern is not None:  # the tint that, times the pattern, averages to the colour
+            texture = texture_file(pattern)
+            files[texture] = pattern_png(pattern)
+            rgba = tinted(rgba, pattern)  # type: ignore[assignment]
         visual.append(
             VisualPart(
                 mesh=filename,
-                rgba=material.rgba,
+                rgba=rgba,
+                texture=texture,
                 specular=material.specular,
                 shininess=material.shininess,
             )
         )
-    vertices = np.concatenate(all_vertices)
+    vertices = np.concatenate([m.vertices for m in visual_meshes])
     low, high = vertices.min(axis=0), vertices.max(axis=0)
     if expected_size is not None and np.any(np.abs(high - low - expected_size) > 1e-3):
         raise ValueError(
             f"{design.id}: generated size {tuple(np.round(high - low, 4))} differs from the "
             f"requested {expected_size}"
         )
-    colliders = [c for part in parts for c in part.colliders()]
+    colliders, gap = covering_colliders(parts)
     _check_inside(design.id, colliders, low, high)
     _check_clearance(design.id, parts)
-    collision = [_collision_part(c) for c in colliders]
+    collision = []
+    hulls: dict[int, np.ndarray] = {}
+    for k, collider in enumerate(colliders):
+        part, hull = _collision_part(collider, f"hull_{k:02d}.obj")
+        if hull is not None:
+            files[part.mesh] = hull[0]  # type: ignore[index]
+            hulls[k] = hull[1]
+        collision.append(part)
     volume = sum(c.volume_m3 for c in collision)
     surfaces = [_support_surface(s) for part in parts for s in part.surfaces()]
     surfaces.sort(key=lambda s: (s.height, s.polygon))
@@ -121,12 +172,100 @@ def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBun
         "surfaces": [s.model_dump(mode="json") for s in surfaces],
         "source": SOURCE,
         "license": LICENSE,
+        "collider_gap_m": round_gap(gap.distance_m),
     }
+    if hulls:
+        meta["maxhullvert"] = max(MIN_HULL_VERTICES, *(len(h) for h in hulls.values()))
     if design.attributes:
         meta["attributes"] = dict(design.attributes)
     if design.proxy:
         meta["proxy"] = True
     return AssetBundle(meta=validate_model(AssetMeta, meta, design.id), files=files)
+
+
+def covering_colliders(
+    parts: Sequence[Part], target: float = COVER_TARGET_M
+) -> tuple[list[Collider], ColliderGap]:
+    """The colliders of ``parts``, completed so that they cover every visual part, and the gap
+    they leave (measured on the parts as drawn, before the files round them to 10 microns).
+
+    Parts whose visual surface reaches more than ``target`` outside every collider get their
+    own colliders back if they are visual-only (a net, a blind's slats, a lamp's glass); those
+    still uncovered and convex get the convex hull of their mesh in place of their colliders
+    (a slanted board or an elliptic top whose inscribed boxes leave slivers) where that leaves
+    less uncovered. Parts neither helps keep their colliders; the gap reports what they leave.
+    """
+    own = [part.colliders() for part in parts]
+    meshes = {i: mesh for i, part in enumerate(parts) if (mesh := part.mesh()) is not None}
+    shown = list(meshes)
+    pieces = {i: (m.vertices, m.faces) for i, m in meshes.items()}
+
+    def measure(which: list[int]) -> dict[int, float]:
+        everything = [c for group in own for c in group]
+        if not everything:
+            return {i: math.inf for i in which}
+        found, _, _ = mesh_gaps([pieces[i] for i in which], everything, stop_above=target)
+        return dict(zip(which, found.tolist(), strict=True))
+
+    everything = [c for group in own for c in group]
+    if everything:
+        first, point, count = mesh_gaps([pieces[i] for i in shown], everything, stop_above=target)
+        if first.max() <= target:  # exact: only gaps above the target are cut short
+            return everything, ColliderGap(float(first.max()), point, count)
+        gaps = dict(zip(shown, first.tolist(), strict=True))
+    else:
+        gaps = {i: math.inf for i in shown}
+    bad = [i for i in shown if gaps[i] > target]
+    if bad:
+        for i in bad:
+            forced = with_collision(parts[i])
+            colliders = forced.colliders() if forced is not None else []
+            if colliders:
+                own[i] = colliders
+        gaps.update(measure(bad))
+        convex = [i for i in bad if gaps[i] > target and is_convex(meshes[i])]
+        if convex:
+            before = {i: (own[i], gaps[i]) for i in convex}
+            for i in convex:
+                own[i] = [hull_collider(pieces[i][0])]
+            after = measure(convex)
+            for i in convex:
+                if after[i] >= before[i][1] - 1e-6:
+                    own[i] = before[i][0]  # the hull does not help: keep what it had
+    everything = [c for group in own for c in group]
+    if not everything:
+        raise ValueError("a design needs at least one collider")
+    return everything, collider_gap([pieces[i] for i in shown], everything)
+
+
+def with_collision(part: Part) -> Part | None:
+    """``part`` with its colliders switched on (through role wrappers), or None if it has no
+    ``collide`` switch or it is on already."""
+    if not dataclasses.is_dataclass(part) or isinstance(part, type):
+        return None
+    names = {f.name for f in dataclasses.fields(part)}
+    if "collide" in names:
+        if part.collide:
+            return None
+        return dataclasses.replace(part, collide=True)  # type: ignore[type-var]
+    if "part" in names:
+        inner = with_collision(part.part)
+        return None if inner is None else dataclasses.replace(part, part=inner)  # type: ignore[type-var]
+    return None
+
+
+def is_convex(mesh: Mesh, tolerance: float = 1e-7) -> bool:
+    """True if ``mesh`` (closed, faces outward) bounds a convex solid: no vertex lies in front
+    of any face's plane. Meshes with many vertices are not checked (False)."""
+    if len(mesh.vertices) > _MAX_CONVEX_CHECK or len(mesh.faces) < 4:
+        return False
+    tri = mesh.vertices[mesh.faces]
+    normals = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    lengths = np.linalg.norm(normals, axis=1)
+    keep = lengths > 1e-14
+    normals = normals[keep] / lengths[keep, None]
+    heights = np.einsum("fvk,fk->fv", mesh.vertices[None, :, :] - tri[keep, 0][:, None, :], normals)
+    return bool(np.all(heights <= tolerance))
 
 
 def assemble_all(designs: Sequence[AssetDesign]) -> list[AssetBundle]:
@@ -191,16 +330,54 @@ def _check_clearance(asset_id: str, parts: Sequence[Part]) -> None:
                     )
 
 
-def _collision_part(collider: Collider) -> CollisionPart:
+def _collision_part(
+    collider: Collider, hull_name: str
+) -> tuple[CollisionPart, tuple[bytes, np.ndarray] | None]:
+    """The metadata of a collider, and for a hull its OBJ file and its vertices as written."""
+    pos = tuple(_r(v) for v in collider.pos)
+    quat = tuple(_r(v) for v in collider.quat)
+    if collider.kind == "mesh":
+        vertices, faces = _hull_mesh(np.asarray(collider.vertices, dtype=float))
+        mesh = rounded(Mesh(vertices, faces))
+        data = obj_bytes(mesh, comment=f"convex collider ({SOURCE}, {LICENSE})")
+        written = tuple((float(x), float(y), float(z)) for x, y, z in mesh.vertices)
+        rounded_collider = Collider("mesh", (), collider.pos, vertices=written)
+        part = CollisionPart(
+            kind="mesh",
+            mesh=hull_name,
+            size=tuple(_r(v) for v in rounded_collider.half_extents()),  # as MuJoCo sizes it
+            pos=pos,
+            quat=(1.0, 0.0, 0.0, 0.0),
+            volume_m3=float(f"{rounded_collider.volume:.9g}"),
+        )
+        return part, (data, mesh.vertices)
     size = tuple(_r(v) for v in collider.size)
-    rounded = Collider(collider.kind, size, collider.pos, collider.axis)
-    return CollisionPart(
+    rounded_collider = Collider(collider.kind, size, collider.pos, collider.axis)
+    part = CollisionPart(
         kind=collider.kind,
         size=size,
-        pos=tuple(_r(v) for v in collider.pos),
-        quat=tuple(_r(v) for v in collider.quat),
-        volume_m3=float(f"{rounded.volume:.9g}"),
+        pos=pos,
+        quat=quat,
+        volume_m3=float(f"{rounded_collider.volume:.9g}"),
     )
+    return part, None
+
+
+def _hull_mesh(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The convex hull of ``points``: its vertices (in input order) and outward triangles."""
+    from scipy.spatial import ConvexHull
+
+    hull = ConvexHull(points)
+    used = np.sort(hull.vertices)
+    index = np.full(len(points), -1, dtype=np.int64)
+    index[used] = np.arange(len(used))
+    faces = hull.simplices.copy()
+    centre = points[used].mean(axis=0)
+    tri = points[faces]
+    normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    flip = np.einsum("fk,fk->f", normal, tri[:, 0] - centre) < 0
+    faces[flip] = faces[flip][:, [0, 2, 1]]
+    return points[used], index[faces]
 
 
 def _support_surface(surface: Surface) -> SupportSurface:

@@ -1,20 +1,36 @@
-"""Attributes a plan asks of an asset (colour, material, shape, style) and how a procedural
-design honours them.
+"""Attributes a plan asks of an asset (colour, material, shape, style, and the colour or
+material of its parts) and how a procedural design honours them.
 
 :func:`attributes_from_text` reads them from an object description with this module's own word
-lists (``"a pink velvet sofa"`` -> ``Attributes(colour="pink", material="velvet")``); only the
-head of the description counts, up to the first ``with``/``on``/``of``/... (``"a banquet table
-with a white cloth"`` asks no colour of the table).
+lists (``"a pink velvet sofa"`` -> ``Attributes(colour="pink", material="velvet")``). The
+object's own attributes come from the head of the description only, up to the first
+``with``/``on``/``of``/... (``"a banquet table with a white cloth"`` asks no colour of the
+table); **part attributes** come from part phrases anywhere in it: colours and materials right
+before a part noun (:data:`PART_NOUNS`: handles, legs, top, seat, shade, frame, doors,
+drawers, cushions...) that ends a phrase (``"white kitchen cabinets with brass handles"``,
+``"a coffee table with a glass top and black metal legs"``, ``"a glass-topped table"``,
+``"legs in black metal"``): ``PartAttributes("handles", material="brass")``, as a dict
+``{"handles.material": "brass"}``.
 
 :func:`conditioned_design` builds a category's design with them:
 
-- **shape** (``round``/``oval``/``square``) for coffee, side and dining tables and (round) for
-  mirrors. Round and square tables are the category's own generator at a square footprint
-  (the side is the smaller of the planned two), re-drawn until it yields that shape; oval tables
-  and round mirrors have their own builders here (an elliptic top on a pedestal; a framed disc).
+- **shape** (``round``/``oval``/``square``) for coffee, side and dining tables, (round,
+  square) for stools, (round) for mirrors and (``l-shaped``) for desks. Round and square
+  tables and stools are the category's own generator at a square footprint (the side is the
+  smaller of the planned two), re-drawn until it yields that shape; oval tables, round mirrors
+  and L-shaped desks have their own builders here (an elliptic top on a pedestal; a framed
+  disc; a top along the back with a return wing reaching the front, on five legs).
+- **parts**: generators tag their parts with roles (:mod:`.roles`); a part request recolours
+  only the parts of that role (a seat also its cushion; a table without legs, its base:
+  :data:`PART_TARGETS`), with one new material per material replaced, so the asset's visual
+  meshes show it. The design is re-drawn (up to :data:`PART_DRAWS` times) until it has the
+  part (a sofa on legs rather than a plinth); a part the design lacks is reported, not faked
+  (:func:`condition` gives per part how it was honoured or why not).
 - **colour / material** go to the design's MAIN material: the material with the largest visual
   surface area, bedding, screens, mirror glass, soil and foliage left out (so a bed's frame, a
-  mirror's frame, a plant's pot); every part of that material changes with it. A colour alone
+  mirror's frame, a plant's pot), parts that a part request names left out too ("a wooden
+  table with a glass top": the legs are the wood); every part of that material changes with
+  it. A colour alone
   keeps the finish (specular, shininess) of the material it replaces; a material alone brings
   its own colour.
 - **style** biases the main material when no colour or material is asked (rustic -> pine,
@@ -34,7 +50,17 @@ from typing import Any
 
 import numpy as np
 
-from asset_pipeline.procedural.parts import Collider, Material, Mesh, Part, Surface, Vec3, add3
+from asset_pipeline.procedural.parts import (
+    Box,
+    Collider,
+    Material,
+    Mesh,
+    Part,
+    Surface,
+    Vec3,
+    add3,
+)
+from asset_pipeline.procedural.roles import ROLES, Tagged, role_of, tagged, with_material
 from asset_pipeline.procedural.round_parts import INSCRIBED, Cylinder
 
 # --- word lists ------------------------------------------------------------------------------
@@ -177,8 +203,14 @@ MATERIAL_SYNONYMS = {
     "glazed": "ceramic",
     "wicker": "wicker",
 }
-SHAPES = ("round", "oval", "square")
-SHAPE_SYNONYMS = {"circular": "round", "elliptical": "oval", "oblong": "oval"}
+SHAPES = ("round", "oval", "square", "l-shaped")
+SHAPE_SYNONYMS = {
+    "circular": "round",
+    "elliptical": "oval",
+    "oblong": "oval",
+    "l shaped": "l-shaped",
+    "l-shape": "l-shaped",
+}
 STYLES = (
     "modern",
     "rustic",
@@ -242,16 +274,98 @@ _STOPS = frozenset(
      "holding", "containing", "that", "which", "by", "against", "above", "below", "behind"}
 )  # fmt: skip
 _WORD = re.compile(r"[a-z]+(?:-[a-z]+)*")
+_BREAK = re.compile(r"[,.;:()!?]")  # punctuation that ends a part phrase
+
+# --- parts -----------------------------------------------------------------------------------
+# Nouns (one or two words) naming a part of an asset -> the role asked. Adjectival forms
+# ("metal-legged", "glass-topped") count inside a hyphenated word.
+PART_NOUNS: dict[str, str] = {
+    "top": "top", "tops": "top", "tabletop": "top", "table top": "top", "worktop": "top",
+    "countertop": "top", "counter top": "top", "topped": "top",
+    "leg": "legs", "legs": "legs", "legged": "legs", "feet": "legs",
+    "base": "base", "pedestal": "base", "plinth": "base", "foot": "base",
+    "stand": "stand", "pole": "pole", "stem": "pole", "column": "pole",
+    "frame": "frame", "frames": "frame", "framed": "frame", "body": "body", "carcass": "body",
+    "seat": "seat", "seats": "seat", "cushion": "cushions", "cushions": "cushions",
+    "seat cushion": "cushions", "seat cushions": "cushions",
+    "back": "back", "backrest": "back", "backs": "back",
+    "arm": "arms", "arms": "arms", "armrest": "arms", "armrests": "arms",
+    "headboard": "headboard", "bedding": "bedding", "sheets": "bedding", "mattress": "bedding",
+    "duvet": "bedding", "pillows": "bedding",
+    "door": "doors", "doors": "doors", "drawer": "drawers", "drawers": "drawers",
+    "drawer fronts": "drawers", "fronts": "fronts", "cabinet doors": "doors",
+    "handle": "handles", "handles": "handles", "handled": "handles", "pull": "handles",
+    "pulls": "handles", "knob": "handles", "knobs": "handles", "hardware": "handles",
+    "shade": "shade", "shades": "shade", "lampshade": "shade", "lamp shade": "shade",
+    "shaded": "shade", "shelf": "shelves", "shelves": "shelves",
+}  # fmt: skip
+# A role asked -> (roles of the parts it applies to, roles used instead when none of those is
+# in the design): a seat is the seat board and its cushion; a table without legs stands on its
+# base; a stand is a lamp's base and pole.
+PART_TARGETS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "seat": (("seat", "cushions"), ()),
+    "cushions": (("cushions",), ("seat",)),
+    "legs": (("legs",), ("base",)),
+    "base": (("base",), ("legs",)),
+    "stand": (("base", "pole", "legs"), ()),
+    "frame": (("frame",), ("legs", "base")),
+    "fronts": (("doors", "drawers"), ()),
+}
+PART_ROLES = (*ROLES, "stand", "fronts")
+"""Every role a request may name, in the order reports list them."""
+_PLURAL_ROLES = frozenset(
+    {"legs", "cushions", "arms", "bedding", "doors", "drawers", "handles", "shelves", "fronts"}
+)
+_SECTION_WORDS = frozenset({"and", "or", "plus"})  # may follow a part noun
+_ARTICLES = frozenset({"a", "an", "the"})
+
+
+def part_targets(role: str) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(roles a request for ``role`` applies to, roles used instead when none is there)."""
+    return PART_TARGETS.get(role, ((role,), ()))
+
+
+@dataclass(frozen=True)
+class PartAttributes:
+    """The colour and/or material asked of one part of an asset (``"brass handles"``)."""
+
+    role: str
+    colour: str | None = None
+    material: str | None = None
+
+    def __post_init__(self) -> None:
+        if self.role not in PART_ROLES:
+            raise ValueError(f"unknown part {self.role!r} (known: {', '.join(PART_ROLES)})")
+        if self.colour is None and self.material is None:
+            raise ValueError(f"the {self.role} ask no colour or material")
+        if self.colour is not None and colour_rgb(self.colour) is None:
+            raise ValueError(f"unknown colour {self.colour!r}")
+        if self.material is not None and self.material not in MATERIALS:
+            raise ValueError(f"unknown material {self.material!r}")
+
+    def finish(self) -> Attributes:
+        """The colour and material as whole-object attributes (what :func:`finished` takes)."""
+        return Attributes(colour=self.colour, material=self.material)
+
+    def words(self) -> str:
+        """``"black metal legs"``: how a description names the request."""
+        material = MATERIALS[self.material].label if self.material else None
+        return " ".join(w for w in (self.colour, material, self.role) if w)
 
 
 @dataclass(frozen=True)
 class Attributes:
-    """What is asked of an asset; None where nothing is."""
+    """What is asked of an asset; None where nothing is.
+
+    ``parts`` are requests for parts of it (``"with brass handles"``), one per role, in the
+    order of :data:`PART_ROLES`; as a dict they read ``{"handles.material": "brass"}``.
+    """
 
     colour: str | None = None
     material: str | None = None
     shape: str | None = None
     style: str | None = None
+    parts: tuple[PartAttributes, ...] = ()
 
     def __post_init__(self) -> None:
         if self.colour is not None and colour_rgb(self.colour) is None:
@@ -262,20 +376,37 @@ class Attributes:
             raise ValueError(f"unknown shape {self.shape!r}")
         if self.style is not None and self.style not in STYLES:
             raise ValueError(f"unknown style {self.style!r}")
+        roles = [p.role for p in self.parts]
+        if len(set(roles)) != len(roles):
+            raise ValueError(f"a part is asked twice: {roles}")
+        ordered = tuple(sorted(self.parts, key=lambda p: PART_ROLES.index(p.role)))
+        object.__setattr__(self, "parts", ordered)
 
     @classmethod
     def from_dict(cls, data: dict[str, str] | None) -> Attributes:
         """The attributes of a ``to_dict`` result (unknown keys ignored)."""
         data = data or {}
-        return cls(**{k: data[k] for k in ("colour", "material", "shape", "style") if k in data})
+        asked: dict[str, dict[str, str]] = {}
+        for key, value in data.items():
+            role, dot, kind = key.partition(".")
+            if dot and role in PART_ROLES and kind in ("colour", "material"):
+                asked.setdefault(role, {})[kind] = value
+        parts = tuple(PartAttributes(role, **kinds) for role, kinds in asked.items())
+        whole = {k: data[k] for k in ("colour", "material", "shape", "style") if k in data}
+        return cls(**whole, parts=parts)
 
     def to_dict(self) -> dict[str, str]:
-        """The asked attributes only, in a fixed order."""
+        """The asked attributes only, in a fixed order (the object's, then its parts')."""
         out = {}
         for key in ("colour", "material", "shape", "style"):
             value = getattr(self, key)
             if value is not None:
                 out[key] = value
+        for part in self.parts:
+            for key in ("colour", "material"):
+                value = getattr(part, key)
+                if value is not None:
+                    out[f"{part.role}.{key}"] = value
         return out
 
     def __bool__(self) -> bool:
@@ -310,33 +441,145 @@ def colour_rgb(name: str) -> tuple[float, float, float] | None:
     return None
 
 
+@dataclass(frozen=True)
+class _Token:
+    word: str
+    compound: int  # index of the (hyphenated) word it came from
+    boundary: bool  # punctuation follows it
+
+
+def _tokens(text: str) -> list[_Token]:
+    """The words of ``text``; a hyphenated word ending in a part noun is split
+    (``glass-topped`` -> ``glass``, ``topped``), other hyphenated words stay whole."""
+    out: list[_Token] = []
+    lower = text.lower()
+    matches = list(_WORD.finditer(lower))
+    for k, match in enumerate(matches):
+        end = matches[k + 1].start() if k + 1 < len(matches) else len(lower)
+        boundary = bool(_BREAK.search(lower[match.end() : end]))
+        pieces = match.group().split("-")
+        if len(pieces) > 1 and pieces[-1] in PART_NOUNS and _classify(match.group()) is None:
+            out += [_Token(p, k, False) for p in pieces[:-1]] + [_Token(pieces[-1], k, boundary)]
+        else:
+            out.append(_Token(match.group(), k, boundary))
+    return out
+
+
+def _attribute_at(words: list[str], end: int, backwards: bool) -> tuple[str, str, int] | None:
+    """A colour or material phrase (one to three words) ending (``backwards``) or starting at
+    ``end``: (kind, value, words taken), or None."""
+    for size in (3, 2, 1):
+        lo, hi = (end - size + 1, end + 1) if backwards else (end, end + size)
+        if lo < 0 or hi > len(words):
+            continue
+        hit = _classify(" ".join(words[lo:hi]))
+        if hit is not None and hit[0] in ("colour", "material"):
+            return hit[0], hit[1], size
+    return None
+
+
+def _part_phrases(
+    tokens: list[_Token], skip: set[str]
+) -> tuple[dict[str, dict[str, str]], set[int]]:
+    """The part requests in ``tokens`` (role -> {colour, material}) and the token indices they
+    use. A part noun counts when colours or materials come right before it (``brass handles``,
+    ``metal-legged``) or after ``in``/``of`` (``legs in black metal``), and when it ends a
+    phrase: nothing, punctuation, a stop word (``with``, ``and``...) or a category word follows
+    it (``a glass top coffee table``; ``a white base cabinet`` asks nothing of a base)."""
+    words = [t.word for t in tokens]
+    found: dict[str, dict[str, str]] = {}
+    used: set[int] = set()
+    j = 0
+    while j < len(tokens):
+        size = next(
+            (n for n in (2, 1) if " ".join(words[j : j + n]) in PART_NOUNS and j + n <= len(words)),
+            0,
+        )
+        if not size or any(w in skip for w in words[j : j + size]):
+            j += 1
+            continue
+        end = j + size
+        last = tokens[end - 1]
+        after = words[end] if end < len(words) else None
+        # "metal-legged": the part noun ends a hyphenated word, and only its words count
+        compound = j > 0 and tokens[j - 1].compound == tokens[j].compound
+        if not (
+            compound
+            or after is None
+            or last.boundary
+            or after in _STOPS
+            or after in _SECTION_WORDS
+            or after in skip
+        ):
+            j += 1
+            continue
+        asked: dict[str, str] = {}
+        taken: list[int] = []
+        k = j - 1
+        while k >= 0 and not tokens[k].boundary:
+            if compound and tokens[k].compound != tokens[j].compound:
+                break
+            hit = _attribute_at(words, k, backwards=True)
+            if hit is None or any(w in skip for w in words[k - hit[2] + 1 : k + 1]):
+                break
+            asked.setdefault(hit[0], hit[1])
+            taken += range(k - hit[2] + 1, k + 1)
+            k -= hit[2]
+        if not asked and after in ("in", "of") and not last.boundary:
+            k = end + 1
+            while k < len(words):
+                hit = _attribute_at(words, k, backwards=False)
+                if hit is None:
+                    break
+                asked.setdefault(hit[0], hit[1])
+                taken += range(k, k + hit[2])
+                k += hit[2]
+            if asked:
+                taken.append(end)
+        if asked:
+            role = PART_NOUNS[" ".join(words[j:end])]
+            for kind, value in asked.items():
+                found.setdefault(role, {}).setdefault(kind, value)
+            used.update(taken)
+            used.update(range(j, end))
+        j = end
+    return found, used
+
+
 def attributes_from_text(text: str, category: str | None = None) -> Attributes:
-    """The attributes named in the head of ``text`` (see the module docstring).
+    """The attributes named in ``text`` (see the module docstring): the object's from the head
+    of the text, its parts' from part phrases anywhere (``"with brass handles"``).
 
     Words of ``category`` never count (an ``orange`` is not asked to be orange).
     """
-    skip = set(_WORD.findall((category or "").lower().replace("_", " ")))
-    words = []
-    for word in _WORD.findall(text.lower()):
-        if word in _STOPS and words:
+    skip = set(_WORD.findall((category or "").lower().replace("_", " ").replace("-", " ")))
+    tokens = _tokens(text)
+    asked_parts, used = _part_phrases(tokens, skip)
+    words: list[str] = []
+    for index, token in enumerate(tokens):
+        if token.word in _STOPS and words:
             break
-        words.append(word)
+        if index in used:
+            words.append("")  # a part's word: keeps phrases from joining across it
+            continue
+        words.append(token.word)
     found: dict[str, str] = {}
     i = 0
     while i < len(words):
         taken = 1
         for size in (3, 2, 1):
-            phrase = " ".join(words[i : i + size])
-            if len(words[i : i + size]) < size or any(w in skip for w in words[i : i + size]):
+            window = words[i : i + size]
+            if len(window) < size or "" in window or any(w in skip for w in window):
                 continue
-            hit = _classify(phrase)
+            hit = _classify(" ".join(window))
             if hit is not None:
                 kind, value = hit
                 found.setdefault(kind, value)
                 taken = size
                 break
         i += taken
-    return Attributes(**found)
+    parts = tuple(PartAttributes(role, **kinds) for role, kinds in asked_parts.items())
+    return Attributes(**found, parts=parts)
 
 
 def _classify(phrase: str) -> tuple[str, str] | None:
@@ -453,19 +696,19 @@ def main_material(parts: tuple[Part, ...] | list[Part]) -> Material:
 
 def recoloured(parts: tuple[Part, ...], base: Material, material: Material) -> tuple[Part, ...]:
     """``parts`` with every part of material ``base`` made of ``material``."""
-    return tuple(
-        replace(p, material=material) if p.material.name == base.name else p  # type: ignore[type-var]
-        for p in parts
-    )
+    return tuple(with_material(p, material) if p.material.name == base.name else p for p in parts)
 
 
 # --- shapes ----------------------------------------------------------------------------------
 TABLES = ("coffee_table", "side_table", "dining_table")
+TABLE_SHAPES = ("round", "oval", "square")
 SHAPED = {
-    "coffee_table": SHAPES,
-    "side_table": SHAPES,
-    "dining_table": SHAPES,
+    "coffee_table": TABLE_SHAPES,
+    "side_table": TABLE_SHAPES,
+    "dining_table": TABLE_SHAPES,
+    "stool": ("round", "square"),
     "mirror": ("round",),
+    "desk": ("l-shaped",),
 }
 
 
@@ -543,9 +786,17 @@ def _oval_table(size: Vec3, rng: np.random.Generator) -> tuple[list[Part], dict[
     t = uniform(rng, 0.025, 0.045)
     foot_r = min(0.6 * min(d, w) / 2.0, 0.32)
     parts: list[Part] = [
-        Cylinder((0.0, 0.0, 0.02), foot_r, 0.02, leg),
-        Cylinder((0.0, 0.0, 0.5 * (h - t + 0.04)), 0.055, 0.5 * (h - t - 0.04), leg),
-        EllipticSlab((0.0, 0.0, h - 0.5 * t), 0.5 * d, 0.5 * w, 0.5 * t, top, surface=True),
+        *tagged(
+            "base",
+            [
+                Cylinder((0.0, 0.0, 0.02), foot_r, 0.02, leg),
+                Cylinder((0.0, 0.0, 0.5 * (h - t + 0.04)), 0.055, 0.5 * (h - t - 0.04), leg),
+            ],
+        ),
+        *tagged(
+            "top",
+            [EllipticSlab((0.0, 0.0, h - 0.5 * t), 0.5 * d, 0.5 * w, 0.5 * t, top, surface=True)],
+        ),
     ]
     legs = "a pedestal" if leg is top else f"a {leg.words} pedestal"
     return parts, {"top": top.words, "shape": "oval", "legs": legs, "shelf": ""}
@@ -563,34 +814,91 @@ def _round_mirror(size: Vec3, rng: np.random.Generator) -> tuple[list[Part], dic
     glass = d - back
     rim = min(0.06, 0.12 * r)
     parts: list[Part] = [
-        Cylinder((-0.5 * d + 0.5 * back, 0.0, r), r, 0.5 * back, frame, axis="x"),
+        Tagged(Cylinder((-0.5 * d + 0.5 * back, 0.0, r), r, 0.5 * back, frame, axis="x"), "frame"),
         Cylinder((0.5 * d - 0.5 * glass, 0.0, r), r - rim, 0.5 * glass, MIRROR, axis="x"),
     ]
     return parts, {"frame": frame.words}
 
 
+def _l_desk(size: Vec3, rng: np.random.Generator) -> tuple[list[Part], dict[str, str]]:
+    """An L-shaped corner desk: a top along the back (-X) and a return wing on its +Y end
+    reaching the front, both support surfaces, on square legs at the L's five outer corners."""
+    from asset_pipeline.procedural.kit import BLACK_METAL, CASE_FINISHES, chance, pick, uniform
+
+    d, w, h = size
+    hd, hw = 0.5 * d, 0.5 * w
+    top = pick(rng, CASE_FINISHES)
+    leg = top if chance(rng, 0.5) else BLACK_METAL
+    t = uniform(rng, 0.025, 0.04)
+    main = min(max(0.6 * d, 0.45), d - 0.25)  # depth of the top along the back
+    wing = min(max(0.35 * w, 0.45), 0.6 * w)  # width of the return
+    side = 0.05
+    x_main = -hd + main
+    y_wing = hw - wing
+    parts: list[Part] = [
+        *tagged("top", [Box((0.5 * (x_main - hd), 0.0, h - 0.5 * t), (0.5 * main, hw, 0.5 * t),
+                            top, surface=True)]),
+        *tagged("top", [Box((0.5 * (x_main + hd), 0.5 * (y_wing + hw), h - 0.5 * t),
+                            (0.5 * (hd - x_main), 0.5 * wing, 0.5 * t), top, surface=True)]),
+    ]  # fmt: skip
+    corners = ((-hd, -hw), (x_main - side, -hw), (-hd, hw - side), (hd - side, hw - side),
+               (hd - side, y_wing))  # fmt: skip
+    half = (0.5 * side, 0.5 * side, 0.5 * (h - t))
+    legs = [Box((x + half[0], y + half[1], half[2]), half, leg) for x, y in corners]
+    parts += tagged("legs", legs)
+    legs_words = "" if leg is top else f" on {leg.words} legs"
+    words = {
+        "top": top.words,
+        "shape": "l-shaped",
+        "style": f"with an l-shaped corner return{legs_words}",
+    }
+    return parts, words
+
+
 def shaped_size(category: str, shape: str | None, size: Vec3) -> Vec3:
     """The size a shaped asset gets: square footprints for round and square tables (the smaller
-    side), a round mirror as wide as tall (the smaller of the two)."""
+    side), a round mirror as wide as tall (the smaller of the two), an L-shaped desk as deep as
+    a desk may be (so that its return reaches forward)."""
     d, w, h = size
     if shape is None or shape not in SHAPED.get(category, ()):
         return size
     if category == "mirror":
         side = min(w, h)
         return (d, side, side)
+    if shape == "l-shaped":
+        from asset_pipeline.procedural.registry import category_info
+
+        return (category_info(category).size_max[0], w, h)
     if shape in ("round", "square"):
         side = min(d, w)
         return (side, side, h)
     return size
 
 
-def conditioned_design(
-    info: Any, size: Vec3, seed: int, attributes: Attributes
-) -> tuple[Any, Vec3, dict[str, str]]:
+@dataclass(frozen=True)
+class Conditioned:
+    """A design built to a request: the design, the size it fills, the attributes honoured
+    (as :meth:`Attributes.to_dict` keys) and, per part asked, how it was honoured or why not."""
+
+    design: Any
+    size: Vec3
+    honoured: dict[str, str]
+    parts_report: dict[str, str]
+
+
+PART_DRAWS = 16
+"""Designs drawn at most to find one with every part asked (a sofa on legs, not on a plinth)."""
+
+
+def condition(info: Any, size: Vec3, seed: int, attributes: Attributes) -> Conditioned:
     """The design of ``info`` (a CategoryInfo) at ``size`` honouring ``attributes``.
 
-    Returns the design, the size it fills and the attributes honoured (a shape the category
-    cannot take is left out of them).
+    A shape the category cannot take is left out of the honoured attributes. Part requests
+    (``"brass handles"``) recolour the parts carrying that role (:mod:`.roles`) only: the
+    design is re-drawn (up to :data:`PART_DRAWS` times) until it has such parts; without them
+    the request goes to the roles standing in for them (:data:`PART_TARGETS`: a table's base
+    for its legs), else it is reported as not honoured. The object's own colour or material
+    goes to the main material of the parts no request names.
     """
     from asset_pipeline.procedural.registry import Design, rng_for
 
@@ -600,39 +908,33 @@ def conditioned_design(
     size = shaped_size(name, shape, size)
     size = info.check_size(size)
     rng = rng_for(name, seed)
-    if shape is not None and shape in SHAPED.get(name, ()):
-        if name == "mirror":
-            parts, words = _round_mirror(size, rng)
-            design = Design(tuple(parts), words)
-        elif shape == "oval":
-            parts, words = _oval_table(size, rng)
-            design = Design(tuple(parts), words)
-        else:
-            design = None
-            for k in range(32):
-                attempt = (
-                    rng
-                    if k == 0
-                    else np.random.default_rng([int(seed), zlib.crc32(name.encode()), 1000 + k])
-                )
-                candidate = info.builder(size, attempt)
-                if candidate.words.get("shape") == shape:
-                    design = candidate
-                    break
-            if design is None:  # pragma: no cover - 32 draws at 60 % each
-                raise ValueError(f"no {shape} {name} in 32 draws")
-        honoured["shape"] = shape
+    shaped = shape is not None and shape in SHAPED.get(name, ())
+    if shaped and name == "mirror":
+        parts, words = _round_mirror(size, rng)
+        design = Design(tuple(parts), words)
+    elif shaped and shape == "oval":
+        parts, words = _oval_table(size, rng)
+        design = Design(tuple(parts), words)
+    elif shaped and shape == "l-shaped":
+        parts, words = _l_desk(size, rng)
+        design = Design(tuple(parts), words)
+    elif shaped or attributes.parts:
+        design = _drawn(info, size, seed, rng, shape if shaped else None, attributes.parts)
     else:
         design = info.builder(size, rng)
-    base = main_material(design.parts)
+    if shaped:
+        honoured["shape"] = shape  # type: ignore[assignment]
+    targets = {p.role: _targets(design.parts, p.role) for p in attributes.parts}
+    named = {k for indices, _ in targets.values() for k in indices}
+    rest = [p for k, p in enumerate(design.parts) if k not in named]
+    base = main_material(rest or design.parts)
     wanted = styled(attributes, base)
     words = dict(design.words)
+    parts = design.parts
     if wanted.colour is not None or wanted.material is not None:
         material = finished(base, wanted)
-        design = Design(recoloured(design.parts, base, material), words)
-        for key, value in words.items():
-            if base.words and base.words in value:
-                words[key] = value.replace(base.words, material.words)
+        parts = recoloured(parts, base, material)
+        _reworded(words, base.words, material.words)
         for key in ("colour", "material"):
             if getattr(attributes, key) is not None:
                 honoured[key] = getattr(attributes, key)
@@ -640,15 +942,169 @@ def conditioned_design(
         wanted is not attributes or attributes.colour or attributes.material
     ):
         honoured["style"] = attributes.style
-    return Design(design.parts, words), size, dict(sorted(honoured.items(), key=_order))
+    report: dict[str, str] = {}
+    for request in attributes.parts:
+        indices, stand_in = targets[request.role]
+        if not indices:
+            noun = request.role.replace("_", " ")
+            report[request.role] = f"not honoured: this {name.replace('_', ' ')} has no {noun}"
+            continue
+        parts = _finished_parts(parts, indices, request, words)
+        for key in ("colour", "material"):
+            if getattr(request, key) is not None:
+                honoured[f"{request.role}.{key}"] = getattr(request, key)
+        look = " ".join(w for w in (request.colour, _label(request.material)) if w)
+        roles = sorted({role_of(parts[k]) or "" for k in indices}, key=ROLES.index)
+        where = " and ".join(roles)
+        text = f"{look} on the {where} ({len(indices)} part{'s' if len(indices) > 1 else ''})"
+        if stand_in:
+            text += f": this {name.replace('_', ' ')} has no {request.role}"
+        report[request.role] = text
+    return Conditioned(
+        Design(tuple(parts), words), size, dict(sorted(honoured.items(), key=_order)), report
+    )
 
 
-def _order(item: tuple[str, str]) -> int:
-    return ("colour", "material", "shape", "style").index(item[0])
+def conditioned_design(
+    info: Any, size: Vec3, seed: int, attributes: Attributes
+) -> tuple[Any, Vec3, dict[str, str]]:
+    """The design of ``info`` (a CategoryInfo) at ``size`` honouring ``attributes``.
+
+    Returns the design, the size it fills and the attributes honoured (see :func:`condition`).
+    """
+    made = condition(info, size, seed, attributes)
+    return made.design, made.size, made.honoured
+
+
+def parts_report(
+    category: str, size: Vec3 | None, seed: int, attributes: Attributes
+) -> dict[str, str]:
+    """How each part request of ``attributes`` is honoured by the asset ``generate_asset``
+    builds of ``category`` at ``size`` in style ``seed`` (the design only, nothing assembled):
+    role -> ``"brass on the handles (8 parts)"`` or ``"not honoured: ..."``."""
+    if not attributes.parts:
+        return {}
+    from asset_pipeline.procedural.registry import category_info
+
+    info = category_info(category)
+    return condition(info, info.check_size(size), seed, attributes).parts_report
+
+
+def _drawn(
+    info: Any,
+    size: Vec3,
+    seed: int,
+    rng: np.random.Generator,
+    shape: str | None,
+    asked: tuple[PartAttributes, ...],
+) -> Any:
+    """The category's design, re-drawn until it has ``shape`` (up to 32 draws) and, within
+    :data:`PART_DRAWS` draws, parts for every request of ``asked`` (else the first draw of the
+    shape)."""
+    first = None
+    draws = 32 if shape is not None else PART_DRAWS
+    for k in range(draws):
+        attempt = (
+            rng
+            if k == 0
+            else np.random.default_rng([int(seed), zlib.crc32(info.name.encode()), 1000 + k])
+        )
+        candidate = info.builder(size, attempt)
+        if shape is not None and candidate.words.get("shape") != shape:
+            continue
+        if first is None:
+            first = candidate
+        if all(_targets(candidate.parts, p.role)[0] and not _targets(candidate.parts, p.role)[1]
+               for p in asked):  # fmt: skip
+            return candidate
+        if k >= PART_DRAWS - 1 or not any(role_of(p) for p in candidate.parts):
+            break  # an untagged generator: no draw will have the parts
+    if first is None:  # pragma: no cover - 32 draws at 60 % each
+        raise ValueError(f"no {shape} {info.name} in {draws} draws")
+    return first
+
+
+def _targets(parts: tuple[Part, ...], role: str) -> tuple[list[int], bool]:
+    """Indices of the parts a request for ``role`` recolours, and whether they stand in for
+    parts the design lacks (a table's base for its legs)."""
+    primary, instead = part_targets(role)
+    found = [k for k, p in enumerate(parts) if role_of(p) in primary]
+    if found:
+        return found, False
+    return [k for k, p in enumerate(parts) if role_of(p) in instead], True
+
+
+def _finished_parts(
+    parts: tuple[Part, ...], indices: list[int], request: PartAttributes, words: dict[str, str]
+) -> tuple[Part, ...]:
+    """``parts`` with those at ``indices`` finished as ``request`` asks (one new material per
+    material replaced), the design's words following."""
+    made: dict[str, Material] = {}
+    out = list(parts)
+    for k in indices:
+        base = parts[k].material
+        if base.name not in made:
+            new = finished(base, request.finish())
+            slug = new.name.removeprefix(f"{base.name}__")
+            made[base.name] = replace(new, name=f"{base.name}__{request.role}_{slug}")
+            for key in _word_keys(request.role):
+                if words.get(key):
+                    words[key] = _renamed(words[key], base.words, made[base.name].words)
+                    break
+        out[k] = with_material(parts[k], made[base.name])
+    return tuple(out)
+
+
+def _word_keys(role: str) -> tuple[str, ...]:
+    """The keys of a design's words that may name the material of ``role`` parts."""
+    return {
+        "handles": ("handle", "handles"),
+        "seat": ("cushion",),
+        "cushions": ("cushion",),
+        "legs": ("legs", "leg"),
+        "base": ("legs", "base"),
+        "top": ("top",),
+        "shade": ("shade",),
+        "frame": ("frame",),
+        "headboard": ("headboard",),
+        "pole": ("metal",),
+    }.get(role, (role,))
+
+
+def _renamed(text: str, old: str, new: str) -> str:
+    """``text`` naming ``new`` where it named ``old`` (or, when it did not, ``new`` put in
+    front: ``"square legs"`` -> ``"black metal square legs"``, ``"a pedestal"`` -> ``"a black
+    metal pedestal"``)."""
+    if old and old in text:
+        return text.replace(old, new)
+    if new in text or text != text.strip() or text.startswith(("and ", "with ", "on ")):
+        return text  # not a noun phrase (" and a grey seat cushion")
+    head, _, rest = text.partition(" ")
+    if head in ("a", "an") and rest:
+        return f"{_article(new)} {new} {rest}"
+    return f"{new} {text}"
+
+
+def _reworded(words: dict[str, str], old: str, new: str) -> None:
+    for key, value in words.items():
+        if old and old in value:
+            words[key] = value.replace(old, new)
+
+
+def _label(material: str | None) -> str | None:
+    return MATERIALS[material].label if material else None
+
+
+def _order(item: tuple[str, str]) -> tuple[int, int, int]:
+    role, dot, kind = item[0].partition(".")
+    if not dot:
+        return (0, ("colour", "material", "shape", "style").index(role), 0)
+    return (1, PART_ROLES.index(role), ("colour", "material").index(kind))
 
 
 def described(description: str, category: str, attributes: Attributes, honoured: dict) -> str:
-    """``description`` saying what was honoured: the words asked, where the text lacks them."""
+    """``description`` saying what was honoured: the words asked, where the text lacks them
+    (the object's in front, its parts' after it: ``"... with brass handles"``)."""
     text = " ".join(description.split())
     shown = Attributes.from_dict(honoured)
     wanted = [w for w in (shown.colour, MATERIALS[shown.material].label if shown.material else None)
@@ -673,6 +1129,15 @@ def described(description: str, category: str, attributes: Attributes, honoured:
     if len(words) >= 2 and words[0] in ("a", "an"):
         words[0] = _article(words[1])
         text = " ".join(words)
+    for part in shown.parts:
+        look = part.words().rsplit(" ", 1)[0]
+        primary, instead = part_targets(part.role)
+        roles = {part.role, *primary, *instead}
+        nouns = "|".join(re.escape(n) for n, role in PART_NOUNS.items() if role in roles)
+        if re.search(rf"\b{re.escape(look)}(?: [a-z-]+){{0,2}} (?:{nouns})\b", text):
+            continue  # "white conical shade", "metal square legs", "black metal pedestal"
+        phrase = part.words() if part.role in _PLURAL_ROLES else f"{_article(look)} {part.words()}"
+        text += f" and {phrase}" if " with " in text else f" with {phrase}"
     return text
 
 

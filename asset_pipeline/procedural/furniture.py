@@ -30,6 +30,7 @@ from asset_pipeline.procedural.kit import (
 )
 from asset_pipeline.procedural.parts import Material, Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
+from asset_pipeline.procedural.roles import fronts, tagged
 from asset_pipeline.procedural.round_parts import Cylinder
 
 Rng = np.random.Generator
@@ -59,18 +60,22 @@ def bed(size: Vec3, rng: Rng) -> Design:
     frame_top = mattress_top - thickness
     leg_h = min(uniform(rng, 0.06, 0.16), frame_top - 0.08)
     x0 = -hd + hb_t
-    parts: list[Part] = [block((-hd, x0), (-hw, hw), (0.0, h), headboard)]
+    parts: list[Part] = tagged("headboard", [block((-hd, x0), (-hw, hw), (0.0, h), headboard)])
     foot_t = uniform(rng, 0.03, 0.05) if chance(rng, 0.5) else 0.0
     x1 = hd - foot_t
     if foot_t:
-        parts.append(block((x1, hd), (-hw, hw), (0.0, mattress_top - 0.06), frame))
-    parts += [
-        p.translated((x0 + 0.5 * (x1 - x0), 0.0, 0.0))
-        for p in square_legs(x1 - x0, w, leg_h, 0.07, frame)
-    ]
-    parts.append(block((x0, x1), (-hw, hw), (leg_h, frame_top), frame))
+        parts += tagged("frame", [block((x1, hd), (-hw, hw), (0.0, mattress_top - 0.06), frame)])
+    parts += tagged(
+        "legs",
+        (
+            p.translated((x0 + 0.5 * (x1 - x0), 0.0, 0.0))
+            for p in square_legs(x1 - x0, w, leg_h, 0.07, frame)
+        ),
+    )
+    parts += tagged("frame", [block((x0, x1), (-hw, hw), (leg_h, frame_top), frame)])
     pillow_front = x0 + uniform(rng, 0.36, 0.46)
-    parts.append(
+    bedding: list[Part] = []
+    bedding.append(
         block(
             (x0 + 0.01, x1 - 0.01),
             (-hw + 0.02, hw - 0.02),
@@ -84,7 +89,7 @@ def bed(size: Vec3, rng: Rng) -> Design:
     pillow_h = min(uniform(rng, 0.1, 0.14), h - mattress_top - 0.01)
     for i in range(pillows):
         y0 = -hw + 0.08 + i * span
-        parts.append(
+        bedding.append(
             block(
                 (x0 + 0.05, pillow_front),
                 (y0 + 0.02, y0 + span - 0.02),
@@ -92,6 +97,7 @@ def bed(size: Vec3, rng: Rng) -> Design:
                 LINEN,
             )
         )
+    parts += tagged("bedding", bedding)
     words = {
         "width": "single" if w < 1.2 else ("double" if w < 1.7 else "king-size"),
         "frame": frame.words,
@@ -180,21 +186,23 @@ def _upholstered(size: Vec3, rng: Rng, seats: int) -> tuple[list[Part], dict[str
     rolled = chance(rng, 0.4)
     parts: list[Part] = []
     if legs == "metal legs":
-        parts += round_legs(d, w, base_z, 0.022, BLACK_METAL, inset=0.06)
+        parts += tagged("legs", round_legs(d, w, base_z, 0.022, BLACK_METAL, inset=0.06))
     elif legs == "wooden legs":
-        parts += square_legs(d, w, base_z, 0.045, pick(rng, WOODS), inset=0.03)
+        parts += tagged("legs", square_legs(d, w, base_z, 0.045, pick(rng, WOODS), inset=0.03))
     else:
-        parts.append(
-            block((-hd + 0.03, hd - 0.03), (-hw + 0.03, hw - 0.03), (0.0, base_z), pick(rng, WOODS))
+        plinth = block(
+            (-hd + 0.03, hd - 0.03), (-hw + 0.03, hw - 0.03), (0.0, base_z), pick(rng, WOODS)
         )
-    parts.append(block((-hd, hd), (-hw, hw), (base_z, seat_z), fabric))
-    parts.append(block((-hd, -hd + back_d), (-hw, hw), (seat_z, h), fabric))
+        parts += tagged("base", [plinth])
+    parts += tagged("body", [block((-hd, hd), (-hw, hw), (base_z, seat_z), fabric)])
+    parts += tagged("back", [block((-hd, -hd + back_d), (-hw, hw), (seat_z, h), fabric)])
+    arms: list[Part] = []
     for sign in (-1.0, 1.0):
         y = sorted((sign * hw, sign * (hw - arm_w)))
         if rolled:
             r = 0.5 * arm_w
-            parts.append(block((-hd + back_d, hd), (y[0], y[1]), (seat_z, arm_top - r), fabric))
-            parts.append(
+            arms.append(block((-hd + back_d, hd), (y[0], y[1]), (seat_z, arm_top - r), fabric))
+            arms.append(
                 Cylinder(
                     (0.5 * back_d, 0.5 * (y[0] + y[1]), arm_top - r),
                     r,
@@ -204,19 +212,19 @@ def _upholstered(size: Vec3, rng: Rng, seats: int) -> tuple[list[Part], dict[str
                 )
             )
         else:
-            parts.append(block((-hd + back_d, hd), (y[0], y[1]), (seat_z, arm_top), fabric))
+            arms.append(block((-hd + back_d, hd), (y[0], y[1]), (seat_z, arm_top), fabric))
+    parts += tagged("arms", arms)
     inner = w - 2 * arm_w
     for i in range(seats):
         y0 = -hw + arm_w + i * inner / seats
-        parts.append(
-            block(
-                (-hd + back_d, hd - 0.02),
-                (y0, y0 + inner / seats),
-                (seat_z, seat_top),
-                fabric,
-                surface=True,
-            )
+        cushion = block(
+            (-hd + back_d, hd - 0.02),
+            (y0, y0 + inner / seats),
+            (seat_z, seat_top),
+            fabric,
+            surface=True,
         )
+        parts += tagged("cushions", [cushion])
     words = {
         "fabric": fabric.words if fabric is not LEATHER else "brown leather",
         "legs": {"plinth": "a low wooden plinth", "metal legs": "black metal legs"}.get(
@@ -287,47 +295,47 @@ def dining_chair(size: Vec3, rng: Rng) -> Design:
     seat_bottom = seat_top - seat_t - cushion_t
     parts: list[Part] = []
     for y in ((-hw, -hw + leg), (hw - leg, hw)):
-        parts.append(block((hd - leg, hd), y, (0.0, seat_bottom), wood))
-        parts.append(block((-hd, -hd + leg), y, (0.0, h), wood))
+        parts += tagged("legs", [block((hd - leg, hd), y, (0.0, seat_bottom), wood)])
+        parts += tagged("legs", [block((-hd, -hd + leg), y, (0.0, h), wood)])
     seat_top_board = seat_bottom + seat_t
-    parts.append(
-        block(
-            (-hd, hd),
-            (-hw, hw),
-            (seat_bottom, seat_top_board),
-            wood,
-            surface=False if cushion else (-hd + leg, hd, -hw, hw),
-        )
+    board = block(
+        (-hd, hd),
+        (-hw, hw),
+        (seat_bottom, seat_top_board),
+        wood,
+        surface=False if cushion else (-hd + leg, hd, -hw, hw),
     )
+    parts += tagged("seat", [board])
     if cushion:
-        parts.append(
-            block(
-                (-hd + leg + 0.01, hd - 0.01),
-                (-hw + 0.02, hw - 0.02),
-                (seat_top_board, seat_top),
-                cushion,
-                surface=True,
-            )
+        pad = block(
+            (-hd + leg + 0.01, hd - 0.01),
+            (-hw + 0.02, hw - 0.02),
+            (seat_top_board, seat_top),
+            cushion,
+            surface=True,
         )
+        parts += tagged("cushions", [pad])
     back = pick(rng, ("slatted", "solid", "ladder"))
     x_back = (-hd + 0.006, -hd + leg - 0.006)
     y_in = (-hw + leg, hw - leg)
     back_low = seat_top + 0.12
+    backrest: list[Part] = []
     if back == "solid":
-        parts.append(block(x_back, y_in, (back_low, h - 0.02), wood))
+        backrest.append(block(x_back, y_in, (back_low, h - 0.02), wood))
     elif back == "slatted":
-        parts.append(block(x_back, y_in, (h - 0.08, h - 0.02), wood))
+        backrest.append(block(x_back, y_in, (h - 0.08, h - 0.02), wood))
         slats = 3 if w < 0.5 else 4
         pitch = (y_in[1] - y_in[0]) / (slats + 1)
         for i in range(1, slats + 1):
             yc = y_in[0] + i * pitch
-            parts.append(block(x_back, (yc - 0.012, yc + 0.012), (back_low, h - 0.08), wood))
+            backrest.append(block(x_back, (yc - 0.012, yc + 0.012), (back_low, h - 0.08), wood))
     else:
         rails = 3
         pitch = (h - 0.02 - back_low) / rails
         for i in range(rails):
             z1 = h - 0.02 - i * pitch
-            parts.append(block(x_back, y_in, (z1 - 0.05, z1), wood))
+            backrest.append(block(x_back, y_in, (z1 - 0.05, z1), wood))
+    parts += tagged("back", backrest)
     words = {
         "wood": wood.words,
         "back": back,
@@ -364,46 +372,65 @@ def office_chair(size: Vec3, rng: Rng) -> Design:
     seat_y = (-hw + arm_w + (0.01 if arms else 0.0), hw - arm_w - (0.01 if arms else 0.0))
     reach = 0.5 * (sx[1] - sx[0])
     parts: list[Part] = [
-        block((cx - reach, cx + reach), (-0.03, 0.03), (0.0, 0.04), BLACK_METAL),
-        block(
-            (cx - 0.03, cx + 0.03),
-            (-min(hw, reach + 0.05), min(hw, reach + 0.05)),
-            (0.0, 0.04),
-            BLACK_METAL,
+        *tagged(
+            "base",
+            [
+                block((cx - reach, cx + reach), (-0.03, 0.03), (0.0, 0.04), BLACK_METAL),
+                block(
+                    (cx - 0.03, cx + 0.03),
+                    (-min(hw, reach + 0.05), min(hw, reach + 0.05)),
+                    (0.0, 0.04),
+                    BLACK_METAL,
+                ),
+            ],
         ),
-        Cylinder(
-            (cx, 0.0, 0.5 * (0.04 + seat_top - seat_t)),
-            0.025,
-            0.5 * (seat_top - seat_t - 0.04),
-            metal,
+        *tagged(
+            "pole",
+            [
+                Cylinder(
+                    (cx, 0.0, 0.5 * (0.04 + seat_top - seat_t)),
+                    0.025,
+                    0.5 * (seat_top - seat_t - 0.04),
+                    metal,
+                )
+            ],
         ),
-        block(sx, seat_y, (seat_top - seat_t, seat_top), fabric, surface=True),
-        block(
-            (-hd + back_t, sx[0] + 0.015),
-            (-0.03, 0.03),
-            (seat_top - seat_t, seat_top + 0.15),
-            BLACK_METAL,
+        *tagged("seat", [block(sx, seat_y, (seat_top - seat_t, seat_top), fabric, surface=True)]),
+        *tagged(
+            "frame",
+            [
+                block(
+                    (-hd + back_t, sx[0] + 0.015),
+                    (-0.03, 0.03),
+                    (seat_top - seat_t, seat_top + 0.15),
+                    BLACK_METAL,
+                )
+            ],
         ),
-        block(
-            (-hd, -hd + back_t),
-            (-min(hw, 0.5 * w - 0.02), min(hw, 0.5 * w - 0.02)),
-            (seat_top + 0.12, h),
-            fabric,
+        *tagged(
+            "back",
+            [
+                block(
+                    (-hd, -hd + back_t),
+                    (-min(hw, 0.5 * w - 0.02), min(hw, 0.5 * w - 0.02)),
+                    (seat_top + 0.12, h),
+                    fabric,
+                )
+            ],
         ),
     ]
     if arms:
         arm_top = seat_top + uniform(rng, 0.18, 0.24)
         for y in ((-hw, -hw + arm_w), (hw - arm_w, hw)):
             ym = 0.5 * (y[0] + y[1])
-            parts.append(
-                block(
-                    (cx - 0.02, cx + 0.02),
-                    (ym - 0.012, ym + 0.012),
-                    (seat_top - seat_t, arm_top - 0.03),
-                    BLACK_METAL,
-                )
+            post = block(
+                (cx - 0.02, cx + 0.02),
+                (ym - 0.012, ym + 0.012),
+                (seat_top - seat_t, arm_top - 0.03),
+                BLACK_METAL,
             )
-            parts.append(block((cx - 0.14, cx + 0.12), y, (arm_top - 0.03, arm_top), BLACK_METAL))
+            pad = block((cx - 0.14, cx + 0.12), y, (arm_top - 0.03, arm_top), BLACK_METAL)
+            parts += tagged("arms", [post, pad])
     words = {"fabric": fabric.words, "metal": metal.words, "arms": " and armrests" if arms else ""}
     return Design(tuple(parts), words)
 
@@ -430,22 +457,23 @@ def stool(size: Vec3, rng: Rng) -> Design:
     if round_seat:
         r = 0.5 * d
         inset = 0.45 * r
-        parts += round_legs(d, w, leg_top, 0.016, wood, inset=inset)
-        parts.append(Cylinder((0.0, 0.0, h - 0.5 * seat_t), r, 0.5 * seat_t, wood, surface=True))
+        parts += tagged("legs", round_legs(d, w, leg_top, 0.016, wood, inset=inset))
+        seat = Cylinder((0.0, 0.0, h - 0.5 * seat_t), r, 0.5 * seat_t, wood, surface=True)
+        parts += tagged("seat", [seat])
         reach = 0.5 * d - inset
     else:
         inset = uniform(rng, 0.02, 0.05)
-        parts += square_legs(d, w, leg_top, 0.032, wood, inset=inset)
-        parts.append(
-            block((-0.5 * d, 0.5 * d), (-0.5 * w, 0.5 * w), (leg_top, h), wood, surface=True)
-        )
+        parts += tagged("legs", square_legs(d, w, leg_top, 0.032, wood, inset=inset))
+        seat = block((-0.5 * d, 0.5 * d), (-0.5 * w, 0.5 * w), (leg_top, h), wood, surface=True)
+        parts += tagged("seat", [seat])
         reach = 0.5 * d - inset - 0.016
     footrest = h > 0.6
     if footrest:
         z = 0.3 * h
         for sign in (-1.0, 1.0):
             y = sign * (0.5 * w - inset - (0.0 if round_seat else 0.016))
-            parts.append(block((-reach, reach), (y - 0.01, y + 0.01), (z, z + 0.02), wood))
+            rest = block((-reach, reach), (y - 0.01, y + 0.01), (z, z + 0.02), wood)
+            parts += tagged("frame", [rest])
     words = {
         "shape": "round" if round_seat else "square",
         "wood": wood.words,
@@ -467,30 +495,32 @@ def _table(
     if allow_round and abs(d - w) < 1e-3 and chance(rng, 0.6):
         r = hd
         base_r = min(0.6 * r, 0.3)
-        parts.append(Cylinder((0.0, 0.0, 0.02), base_r, 0.02, leg_mat))
-        parts.append(
-            Cylinder((0.0, 0.0, 0.5 * (h - t + 0.04)), 0.05, 0.5 * (h - t - 0.04), leg_mat)
-        )
-        parts.append(Cylinder((0.0, 0.0, h - 0.5 * t), r, 0.5 * t, top_mat, surface=True))
+        foot = Cylinder((0.0, 0.0, 0.02), base_r, 0.02, leg_mat)
+        column = Cylinder((0.0, 0.0, 0.5 * (h - t + 0.04)), 0.05, 0.5 * (h - t - 0.04), leg_mat)
+        parts += tagged("base", [foot, column])
+        top = Cylinder((0.0, 0.0, h - 0.5 * t), r, 0.5 * t, top_mat, surface=True)
+        parts += tagged("top", [top])
         return parts, {"top": top_mat.words, "shape": "round", "legs": "a pedestal", "shelf": ""}
     legs = pick(rng, ("square legs", "round legs", "panel legs"))
     inset = uniform(rng, 0.0, min(0.06, 0.1 * d))
     side = clamp(uniform(rng, 0.035, 0.07), 0.03, 0.12 * min(d, w))
     leg_h = h - t
     if legs == "square legs":
-        parts += square_legs(d, w, leg_h, side, leg_mat, inset=inset)
+        parts += tagged("legs", square_legs(d, w, leg_h, side, leg_mat, inset=inset))
     elif legs == "round legs":
-        parts += round_legs(d, w, leg_h, 0.5 * side, leg_mat, inset=inset + 0.5 * side)
+        supports = round_legs(d, w, leg_h, 0.5 * side, leg_mat, inset=inset + 0.5 * side)
+        parts += tagged("legs", supports)
     else:
         for y in ((-hw + inset, -hw + inset + side), (hw - inset - side, hw - inset)):
-            parts.append(block((-hd + inset, hd - inset), y, (0.0, leg_h), leg_mat))
-    parts.append(block((-hd, hd), (-hw, hw), (leg_h, h), top_mat, surface=True))
+            parts += tagged("legs", [block((-hd + inset, hd - inset), y, (0.0, leg_h), leg_mat)])
+    parts += tagged("top", [block((-hd, hd), (-hw, hw), (leg_h, h), top_mat, surface=True)])
     shelf = chance(rng, shelf_chance) and h > 0.3
     if shelf:
         x_in = hd - inset - (side if legs == "square legs" else 0.0) - 0.002
         y_in = hw - inset - side - 0.002
         z = min(0.12, 0.3 * h)
-        parts.append(block((-x_in, x_in), (-y_in, y_in), (z - 0.02, z), top_mat, surface=True))
+        board = block((-x_in, x_in), (-y_in, y_in), (z - 0.02, z), top_mat, surface=True)
+        parts += tagged("shelves", [board])
     return parts, {
         "top": top_mat.words,
         "shape": "square" if abs(d - w) < 1e-3 else "rectangular",
@@ -575,11 +605,17 @@ def desk(size: Vec3, rng: Rng) -> Design:
     ped_w = clamp(uniform(rng, 0.38, 0.45), 0.3, 0.35 * w)
     face = hd - 0.05 - 0.036
     parts: list[Part] = [
-        block((-hd, hd), (-hw, hw), (h - t, h), mat, surface=True),
-        block((-hd + 0.02, face), (hw - 0.02 - ped_w, hw - 0.02), (0.0, h - t), mat),
-        block((-hd + 0.02, hd - 0.05), (-hw + 0.02, -hw + 0.05), (0.0, h - t), mat),
+        *tagged("top", [block((-hd, hd), (-hw, hw), (h - t, h), mat, surface=True)]),
+        *tagged(
+            "body", [block((-hd + 0.02, face), (hw - 0.02 - ped_w, hw - 0.02), (0.0, h - t), mat)]
+        ),
+        *tagged(
+            "legs", [block((-hd + 0.02, hd - 0.05), (-hw + 0.02, -hw + 0.05), (0.0, h - t), mat)]
+        ),
     ]
-    parts += drawer_fronts(
-        face, (hw - 0.02 - ped_w, hw - 0.02), (0.02, h - t - 0.01), drawers, 1, mat, handle
+    parts += fronts(
+        drawer_fronts(
+            face, (hw - 0.02 - ped_w, hw - 0.02), (0.02, h - t - 0.01), drawers, 1, mat, handle
+        )
     )
     return Design(tuple(parts), {"top": mat.words, "style": f"with a {drawers}-drawer pedestal"})

@@ -35,6 +35,8 @@ from asset_pipeline.procedural.kit import (
 )
 from asset_pipeline.procedural.parts import Material, Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
+from asset_pipeline.procedural.roles import fronts as tag_fronts
+from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.storage import STONE
 
 
@@ -62,15 +64,15 @@ def _cabinet(
     base_h = {"none": 0.0, "plinth": uniform(rng, 0.05, 0.1), "legs": uniform(rng, 0.1, 0.18)}[base]
     parts: list[Part] = []
     if base == "plinth":
-        parts.append(block((-hd, face - 0.04), (-hw, hw), (0.0, base_h), body))
+        parts += tagged("base", [block((-hd, face - 0.04), (-hw, hw), (0.0, base_h), body)])
     elif base == "legs":
         legs = square_legs(face + hd, w, base_h, 0.04, pick(rng, (BLACK_METAL, *WOODS)), 0.02)
-        parts += [leg.translated((0.5 * (face - hd), 0.0, 0.0)) for leg in legs]
-    parts.append(block((-hd, face), (-hw, hw), (base_h, h - top_t), body))
-    parts.append(block((-hd, hd), (-hw, hw), (h - top_t, h), top, surface=True))
+        parts += tagged("legs", (leg.translated((0.5 * (face - hd), 0.0, 0.0)) for leg in legs))
+    parts += tagged("body", [block((-hd, face), (-hw, hw), (base_h, h - top_t), body)])
+    parts += tagged("top", [block((-hd, hd), (-hw, hw), (h - top_t, h), top, surface=True)])
     z0, z1 = base_h + 0.005, h - top_t - 0.005
     for (f0, f1), rows, cols, style in fronts:
-        parts += drawer_fronts(
+        made = drawer_fronts(
             face,
             (-hw + 0.002, hw - 0.002),
             (z0 + f0 * (z1 - z0), z0 + f1 * (z1 - z0)),
@@ -80,6 +82,7 @@ def _cabinet(
             handle,
             style=style,
         )
+        parts += tag_fronts(made, style)
     return parts
 
 
@@ -268,30 +271,29 @@ def console_table(size: Vec3, rng: Rng) -> Design:
     )
     t = uniform(rng, 0.025, 0.04)
     legs = pick(rng, ("square legs", "panel ends"))
-    parts: list[Part] = [block((-hd, hd), (-hw, hw), (h - t, h), top, surface=True)]
+    parts: list[Part] = tagged("top", [block((-hd, hd), (-hw, hw), (h - t, h), top, surface=True)])
     side = 0.04
     if legs == "square legs":
-        parts += square_legs(d, w, h - t, side, leg_mat, inset=0.015)
+        parts += tagged("legs", square_legs(d, w, h - t, side, leg_mat, inset=0.015))
         y_in = hw - 0.015 - side
     else:
         for y in ((-hw + 0.02, -hw + 0.02 + side), (hw - 0.02 - side, hw - 0.02)):
-            parts.append(block((-hd + 0.015, hd - 0.015), y, (0.0, h - t), leg_mat))
+            parts += tagged("legs", [block((-hd + 0.015, hd - 0.015), y, (0.0, h - t), leg_mat)])
         y_in = hw - 0.02 - side
     extra = pick(rng, ("drawers", "shelf", "both"))
     if extra in ("shelf", "both"):
-        parts.append(
-            block((-hd + 0.02, hd - 0.02), (-y_in, y_in), (0.12, 0.14), leg_mat, surface=True)
-        )
+        shelf = block((-hd + 0.02, hd - 0.02), (-y_in, y_in), (0.12, 0.14), leg_mat, surface=True)
+        parts += tagged("shelves", [shelf])
     if extra in ("drawers", "both"):
         apron = (h - t - 0.12, h - t)
         fx = hd - 0.015 - PROUD
-        parts.append(
-            block((-hd + 0.02, fx), (-y_in, y_in), apron, top if top is not MARBLE else leg_mat)
-        )
+        apron_mat = top if top is not MARBLE else leg_mat
+        parts += tagged("body", [block((-hd + 0.02, fx), (-y_in, y_in), apron, apron_mat)])
         cols = 1 if w < 1.0 else 2
-        parts += drawer_fronts(
+        made = drawer_fronts(
             fx, (-y_in, y_in), apron, 1, cols, leg_mat, pick(rng, HANDLES), style="knob"
         )
+        parts += tag_fronts(made, "knob")
     text = {
         "drawers": " with drawers in the apron",
         "shelf": " with a lower shelf",
@@ -325,13 +327,14 @@ def vanity_table(size: Vec3, rng: Rng) -> Design:
     handle = pick(rng, HANDLES)
     t = uniform(rng, 0.02, 0.03)
     fx = hd - PROUD
-    parts: list[Part] = [block((-hd, hd), (-hw, hw), (h - t, h), body, surface=True)]
+    parts: list[Part] = tagged("top", [block((-hd, hd), (-hw, hw), (h - t, h), body, surface=True)])
     style = pick(rng, ("legs", "two pedestals", "one pedestal"))
     if style == "legs":
-        parts += square_legs(d, w, h - t, 0.04, body, inset=0.01)
+        parts += tagged("legs", square_legs(d, w, h - t, 0.04, body, inset=0.01))
         apron = (h - t - 0.14, h - t)
-        parts.append(block((-hd + 0.05, fx), (-hw + 0.05, hw - 0.05), apron, body))
-        parts += drawer_fronts(fx, (-hw + 0.05, hw - 0.05), apron, 1, 3, body, handle, style="knob")
+        parts += tagged("body", [block((-hd + 0.05, fx), (-hw + 0.05, hw - 0.05), apron, body)])
+        made = drawer_fronts(fx, (-hw + 0.05, hw - 0.05), apron, 1, 3, body, handle, style="knob")
+        parts += tag_fronts(made, "knob")
         count, legs = 3, "slender legs"
     else:
         ped = clamp(0.3 * w, 0.3, 0.4)
@@ -339,10 +342,12 @@ def vanity_table(size: Vec3, rng: Rng) -> Design:
         rows = 3
         for sign in sides:
             y = sorted((sign * hw, sign * (hw - ped)))
-            parts.append(block((-hd + 0.01, fx), (y[0], y[1]), (0.0, h - t), body))
-            parts += drawer_fronts(fx, (y[0], y[1]), (0.05, h - t - 0.005), rows, 1, body, handle)
+            parts += tagged("body", [block((-hd + 0.01, fx), (y[0], y[1]), (0.0, h - t), body)])
+            made = drawer_fronts(fx, (y[0], y[1]), (0.05, h - t - 0.005), rows, 1, body, handle)
+            parts += tag_fronts(made)
         if style == "one pedestal":
-            parts.append(block((-hd + 0.01, hd - 0.01), (-hw, -hw + 0.03), (0.0, h - t), body))
+            panel = block((-hd + 0.01, hd - 0.01), (-hw, -hw + 0.03), (0.0, h - t), body)
+            parts += tagged("legs", [panel])
         count = rows * len(sides)
         legs = "two drawer pedestals" if len(sides) == 2 else "a drawer pedestal"
     return Design(tuple(parts), {"body": body.words, "drawers": count_word(count), "legs": legs})

@@ -49,6 +49,7 @@ from asset_pipeline.procedural.kit import (
 )
 from asset_pipeline.procedural.parts import Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
+from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe, Sphere
 
 Rng = np.random.Generator
@@ -359,11 +360,23 @@ def desk_lamp(size: Vec3, rng: Rng) -> Design:
     arm_z = h - 0.008
     shade_top = arm_z - 0.008
     parts: list[Part] = [
-        Cylinder((bx, 0.0, 0.012), base_r, 0.012, metal),
-        Cylinder((bx, 0.0, 0.5 * (0.024 + h)), 0.008, 0.5 * (h - 0.024), metal),
-        Cylinder((0.5 * (bx + sx), 0.0, arm_z), 0.008, 0.5 * (sx - bx), metal, axis="x"),
-        Lathe(
-            (sx, 0.0, shade_top - shade_h), ((shade_r, 0.0), (0.4 * shade_r, shade_h)), shade_mat
+        *tagged("base", [Cylinder((bx, 0.0, 0.012), base_r, 0.012, metal)]),
+        *tagged(
+            "pole",
+            [
+                Cylinder((bx, 0.0, 0.5 * (0.024 + h)), 0.008, 0.5 * (h - 0.024), metal),
+                Cylinder((0.5 * (bx + sx), 0.0, arm_z), 0.008, 0.5 * (sx - bx), metal, axis="x"),
+            ],
+        ),
+        *tagged(
+            "shade",
+            [
+                Lathe(
+                    (sx, 0.0, shade_top - shade_h),
+                    ((shade_r, 0.0), (0.4 * shade_r, shade_h)),
+                    shade_mat,
+                )
+            ],
         ),
     ]
     return Design(tuple(parts), {"metal": metal.words, "shade": shade_mat.words})

@@ -35,13 +35,20 @@ _BOX_FACES = np.array(
 
 @dataclass(frozen=True)
 class Material:
-    """A named colour; every material becomes one visual mesh file of the asset."""
+    """A named colour; every material becomes one visual mesh file of the asset.
+
+    ``pattern`` chooses the procedural texture the colour tints (see
+    :mod:`asset_pipeline.procedural.textures`): None infers it from the label and name words
+    (oak -> wood, linen -> fabric, ...), ``"plain"`` keeps the material untextured, and a
+    pattern name (``"wood"``, ``"leather"``, ...) forces that pattern.
+    """
 
     name: str
     rgba: Vec4
     specular: float = 0.3
     shininess: float = 0.3
     label: str = ""
+    pattern: str | None = None
 
     @property
     def words(self) -> str:
@@ -51,24 +58,34 @@ class Material:
 
 @dataclass(frozen=True)
 class Mesh:
-    """A triangle mesh: float vertices (n, 3) and 0-based triangle indices (m, 3)."""
+    """A triangle mesh: float vertices (n, 3) and 0-based triangle indices (m, 3).
+
+    A textured mesh also has texture coordinates ``uv`` (k, 2) and, per triangle corner, the
+    index of its texture coordinate ``uv_faces`` (m, 3) (a vertex shared by faces projected
+    differently has several).
+    """
 
     vertices: np.ndarray
     faces: np.ndarray
+    uv: np.ndarray | None = None
+    uv_faces: np.ndarray | None = None
 
     def translated(self, offset: Vec3) -> Mesh:
-        """This mesh moved by ``offset``."""
-        return Mesh(self.vertices + np.asarray(offset, dtype=float), self.faces)
+        """This mesh moved by ``offset`` (texture coordinates stay)."""
+        return replace(self, vertices=self.vertices + np.asarray(offset, dtype=float))
 
 
 @dataclass(frozen=True)
 class Collider:
-    """A MuJoCo primitive collider: ``size`` in half-sizes, as MuJoCo takes them."""
+    """A MuJoCo collider: a primitive, ``size`` in half-sizes as MuJoCo takes them, or a convex
+    hull (``kind="mesh"``) of ``vertices`` given relative to ``pos`` (its bounding-box centre).
+    """
 
-    kind: Literal["box", "cylinder", "sphere"]
+    kind: Literal["box", "cylinder", "sphere", "mesh"]
     size: tuple[float, ...]
     pos: Vec3
     axis: Axis = "z"
+    vertices: tuple[Vec3, ...] = ()
 
     @property
     def quat(self) -> Vec4:
@@ -77,25 +94,48 @@ class Collider:
 
     @property
     def volume(self) -> float:
-        """Volume in m^3, as MuJoCo computes it for the primitive."""
+        """Volume in m^3, as MuJoCo computes it for the primitive (or the hull)."""
         if self.kind == "box":
             return 8.0 * self.size[0] * self.size[1] * self.size[2]
         if self.kind == "cylinder":
             return 2.0 * math.pi * self.size[0] ** 2 * self.size[1]
+        if self.kind == "mesh":
+            return hull_volume(np.asarray(self.vertices, dtype=float))
         return 4.0 / 3.0 * math.pi * self.size[0] ** 3
 
     def half_extents(self) -> Vec3:
-        """Half extents of the axis-aligned bounding box."""
+        """Half extents of the axis-aligned bounding box (about ``pos``)."""
         if self.kind == "box":
             return (self.size[0], self.size[1], self.size[2])
         if self.kind == "sphere":
             return (self.size[0],) * 3
+        if self.kind == "mesh":
+            hx, hy, hz = np.abs(np.asarray(self.vertices, dtype=float)).max(axis=0)
+            return (float(hx), float(hy), float(hz))
         radius, half = self.size
         return axis_extents(radius, half, self.axis)
 
     def translated(self, offset: Vec3) -> Collider:
         """This collider moved by ``offset``."""
         return replace(self, pos=add3(self.pos, offset))
+
+
+def hull_collider(points: np.ndarray) -> Collider:
+    """A convex-hull collider through ``points`` (n, 3) in the asset frame; its ``pos`` is the
+    centre of their bounding box. The points must span a volume."""
+    points = np.asarray(points, dtype=float).reshape(-1, 3)
+    centre = 0.5 * (points.min(axis=0) + points.max(axis=0))
+    relative = points - centre
+    pos: Vec3 = (float(centre[0]), float(centre[1]), float(centre[2]))
+    vertices = tuple((float(x), float(y), float(z)) for x, y, z in relative)
+    return Collider("mesh", (), pos, vertices=vertices)
+
+
+def hull_volume(points: np.ndarray) -> float:
+    """Volume of the convex hull of ``points`` (n, 3)."""
+    from scipy.spatial import ConvexHull
+
+    return float(ConvexHull(np.asarray(points, dtype=float)).volume)
 
 
 @dataclass(frozen=True)

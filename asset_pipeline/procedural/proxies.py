@@ -208,7 +208,9 @@ def build_proxy(
     wanted = styled(replace(attributes, shape=None), PROXY)
     if wanted.colour or wanted.material:
         main = finished(PROXY, wanted)
-        honoured = {k: v for k, v in attributes.to_dict().items() if k != "shape"}
+        honoured = {
+            k: v for k, v in attributes.to_dict().items() if k != "shape" and "." not in k
+        }  # a proxy has no parts: "brass handles" are not honoured
     parts = _parts(family, resolved, main, PROXY_TRIM)
     volume = sum(c.volume for p in parts for c in p.colliders())
     low, high = MASS_RANGE.get(placement, MASS_RANGE["floor"])

@@ -1,8 +1,11 @@
 """Round parts: cylinders, surfaces of revolution (lathes) and spheres.
 
 Round parts are drawn as polygons with :data:`SEGMENTS` sides whose vertices lie on the true
-radius (vertices on the +-X and +-Y axes, so the bounding box is exact); their colliders use
-the inscribed radius, so no collider ever sticks out of the visual mesh.
+radius (vertices on the +-X and +-Y axes, so the bounding box is exact). No collider ever sticks
+out of the visual mesh, and every collider covers its visual within :data:`COVER_TOLERANCE`:
+a straight piece is a cylinder of the inscribed radius where that leaves little enough
+uncovered, and otherwise (a steep taper such as a lamp shade or a basin, a wide disc) the convex
+hull of the visual polygon rings themselves, which is exact.
 """
 
 from __future__ import annotations
@@ -23,11 +26,36 @@ from asset_pipeline.procedural.parts import (
     Vec3,
     add3,
     axis_extents,
+    hull_collider,
     sub3,
 )
 
 SEGMENTS = 24  # sides of round parts; a multiple of 4
 INSCRIBED = math.cos(math.pi / SEGMENTS)  # inscribed / circumscribed radius of the polygon
+COVER_TOLERANCE = 0.0025  # how much of a round visual a primitive collider may leave uncovered
+
+
+def _unit_circle() -> tuple[np.ndarray, np.ndarray]:
+    """Cosines and sines of the :data:`SEGMENTS` polygon angles, axis directions exact."""
+    angles = np.arange(SEGMENTS) * (2.0 * math.pi / SEGMENTS)
+    cos, sin = np.cos(angles), np.sin(angles)
+    cos[np.abs(cos) < 1e-12] = 0.0
+    sin[np.abs(sin) < 1e-12] = 0.0
+    return cos, sin
+
+
+def ring_points(rings: list[tuple[float, float]], base: Vec3) -> np.ndarray:
+    """The visual polygon vertices of rings (radius, height) about a vertical axis through
+    ``base`` (a ring of radius 0 is its centre point): exactly the vertices
+    :func:`lathe_mesh` draws for them."""
+    cos, sin = _unit_circle()
+    points = []
+    for r, z in rings:
+        if r <= 1e-12:
+            points.append(np.array([[0.0, 0.0, z]]))
+        else:
+            points.append(np.stack([r * cos, r * sin, np.full(SEGMENTS, z)], axis=1))
+    return np.concatenate(points) + np.asarray(base, dtype=float)
 
 
 @dataclass(frozen=True)
@@ -71,11 +99,14 @@ class Lathe:
             return []
         result = []
         for (r0, z0), (r1, z1) in itertools.pairwise(self.outer):
-            if z1 - z0 <= 1e-9:
+            if z1 - z0 <= 1e-9 or max(r0, r1) <= 1e-12:
                 continue
             radius = min(r0, r1) * INSCRIBED
-            center = add3(self.base, (0.0, 0.0, 0.5 * (z0 + z1)))
-            result.append(Collider("cylinder", (radius, 0.5 * (z1 - z0)), center))
+            if max(r0, r1) - radius <= COVER_TOLERANCE:
+                center = add3(self.base, (0.0, 0.0, 0.5 * (z0 + z1)))
+                result.append(Collider("cylinder", (radius, 0.5 * (z1 - z0)), center))
+            else:  # a taper: the frustum's own hull
+                result.append(hull_collider(ring_points([(r0, z0), (r1, z1)], self.base)))
         return result
 
     def bounds(self) -> tuple[Vec3, Vec3] | None:
@@ -125,6 +156,10 @@ class Cylinder:
     def colliders(self) -> list[Collider]:
         if not self.collide:
             return []
+        if self.visual and self.radius * (1.0 - INSCRIBED) > COVER_TOLERANCE:
+            mesh = self.mesh()
+            assert mesh is not None
+            return [hull_collider(mesh.vertices)]  # a wide disc: the prism itself
         radius = self.radius * INSCRIBED if self.visual else self.radius
         return [Collider("cylinder", (radius, self.half_length), self.center, self.axis)]
 
@@ -152,7 +187,9 @@ class Sphere:
     """A sphere, optionally cut flat at height ``cut`` (an absolute z below the centre).
 
     Its collider is the inscribed sphere (kept above the cut); a cut sphere also gets a short
-    inscribed cylinder at its flat base so that it rests without rolling.
+    inscribed cylinder at its flat base so that it rests without rolling. Where the cut keeps
+    that sphere well inside the visual (a ball cut near its equator), the collider is the
+    convex hull of the visual mesh itself instead.
     """
 
     center: Vec3
@@ -194,14 +231,20 @@ class Sphere:
         angles = self._angles()
         step = max(b - a for a, b in itertools.pairwise(angles))
         radius = self.radius * INSCRIBED * math.cos(step / 2.0)
-        result = []
+        result = [Collider("sphere", (radius,), self.center)]
         if self.cut is not None:
-            radius = min(radius, self.center[2] - self.cut)
+            limited = min(radius, self.center[2] - self.cut)
+            if self.visual and radius - limited > COVER_TOLERANCE:
+                mesh = self.mesh()  # the cut keeps an inscribed sphere far from the equator
+                assert mesh is not None
+                return [hull_collider(mesh.vertices)]
             base_r = self._cut_radius() * INSCRIBED
             half = 0.1 * self.radius
             center = (self.center[0], self.center[1], self.cut + half)
-            result.append(Collider("cylinder", (base_r, half), center))
-        result.insert(0, Collider("sphere", (radius,), self.center))
+            result = [
+                Collider("sphere", (limited,), self.center),
+                Collider("cylinder", (base_r, half), center),
+            ]
         return result
 
     def bounds(self) -> tuple[Vec3, Vec3] | None:
@@ -227,11 +270,7 @@ def lathe_mesh(profile: list[tuple[float, float]]) -> Mesh:
     Points with r = 0 become single pole vertices; every other point a ring of
     :data:`SEGMENTS` vertices starting on +X. Triangles face outward.
     """
-    angles = np.arange(SEGMENTS) * (2.0 * math.pi / SEGMENTS)
-    cos, sin = np.cos(angles), np.sin(angles)
-    # Snap the axis-aligned directions so that bounds are exact.
-    cos[np.abs(cos) < 1e-12] = 0.0
-    sin[np.abs(sin) < 1e-12] = 0.0
+    cos, sin = _unit_circle()  # axis directions snapped so that bounds are exact
     vertices: list[np.ndarray] = []
     rings: list[list[int] | int] = []
     count = 0

@@ -29,6 +29,8 @@ from asset_pipeline.procedural.kit import (
 )
 from asset_pipeline.procedural.parts import Material, Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
+from asset_pipeline.procedural.roles import fronts as tag_fronts
+from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe
 
 Rng = np.random.Generator
@@ -65,22 +67,21 @@ def _case(
     ]
     parts: list[Part] = []
     if base == "plinth":
-        parts.append(
-            block(
-                (-hd, face - 0.04),
-                (-hw, hw),
-                (0.0, base_h),
-                BLACK_METAL if chance(rng, 0.3) else body,
-            )
+        plinth = block(
+            (-hd, face - 0.04),
+            (-hw, hw),
+            (0.0, base_h),
+            BLACK_METAL if chance(rng, 0.3) else body,
         )
+        parts += tagged("base", [plinth])
     elif base == "legs":
         legs = square_legs(face + hd, w, base_h, 0.04, pick(rng, (BLACK_METAL, *WOODS)), inset=0.02)
-        parts += [leg.translated((0.5 * (face - hd), 0.0, 0.0)) for leg in legs]
-    parts.append(block((-hd, face), (-hw, hw), (base_h, h - top_t), body))
-    parts.append(block((-hd, hd), (-hw, hw), (h - top_t, h), top, surface=True))
+        parts += tagged("legs", (leg.translated((0.5 * (face - hd), 0.0, 0.0)) for leg in legs))
+    parts += tagged("body", [block((-hd, face), (-hw, hw), (base_h, h - top_t), body)])
+    parts += tagged("top", [block((-hd, hd), (-hw, hw), (h - top_t, h), top, surface=True)])
     z0, z1 = base_h + 0.005, h - top_t - 0.005
     for (f0, f1), rows, cols, style in fronts:
-        parts += drawer_fronts(
+        made = drawer_fronts(
             face,
             (-hw + 0.002, hw - 0.002),
             (z0 + f0 * (z1 - z0), z0 + f1 * (z1 - z0)),
@@ -90,6 +91,7 @@ def _case(
             handle,
             style=style,
         )
+        parts += tag_fronts(made, style)
     return parts
 
 

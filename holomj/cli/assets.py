@@ -48,7 +48,10 @@ def import_command(
     mass: Annotated[
         float | None, typer.Option("--mass", help="Mass in kg (default: density x volume).")
     ] = None,
-    asset_id: Annotated[str | None, typer.Option("--id", help="Asset id (one file only).")] = None,
+    asset_id: Annotated[
+        str | None,
+        typer.Option("--id", help="Asset id (one file only; fails if another asset has it)."),
+    ] = None,
     up: Annotated[
         str | None,
         typer.Option(help="Up axis of the file: y or z (default: y for glTF, z otherwise)."),
@@ -146,6 +149,9 @@ def _print_summary(root: Path, summary: Any, accept_fallback: bool) -> None:
             f"{o.seconds:.1f}",
         )
     out_console.print(table)
+    for o in summary.outcomes:
+        if o.id_note:
+            out_console.print(f"note: {escape(o.asset_id)}: {escape(o.id_note)}")
     for o in summary.degraded:
         out_console.print(
             f"[yellow]warning: {escape(o.asset_id)}: ok (degraded: {escape(o.degraded_reason)}),"

@@ -93,17 +93,20 @@ def import_assets(
     default library; a new folder becomes an empty library first).
 
     The options are checked and the files listed before anything is written; ``on_planned``
-    then gets the number of files, ``on_done`` each file's outcome as it finishes. A file that
+    then gets the number of files, ``on_done`` each file's outcome as it finishes. Ids never
+    silently take over another asset's (see :func:`asset_pipeline.manage.plan_jobs`: a clash
+    gets a ``-2`` suffix and a note, a clashing ``asset_id`` fails). A file that
     fails is reported in the summary and the others go on; see
     :func:`asset_pipeline.manage.run_imports` for degraded (fallback) decompositions.
     """
-    from asset_pipeline.manage import plan_jobs, run_imports
+    from asset_pipeline.manage import existing_assets, plan_jobs, run_imports
 
     options = _import_options(
         category, size, description, mass_kg, up, front, preset, threshold, max_hulls, timeout_s
     )
-    jobs = plan_jobs(paths, asset_id)
+    plan_jobs(paths, asset_id)  # the files are checked before anything is written
     root = resolve_library(library, create=True)
+    jobs = plan_jobs(paths, asset_id, existing_assets(root))
     if on_planned is not None:
         on_planned(len(jobs))
     summary = run_imports(

@@ -1,7 +1,8 @@
 """Assets on demand: synthesise a procedural asset (or build an honest proxy) into a library.
 
 :func:`synthesise` builds an asset of a registered procedural category at a target size, style
-seed and attributes (colour, material, shape, style: :mod:`asset_pipeline.procedural.attributes`);
+seed and attributes (colour, material, shape, style, and colours or materials of parts such as
+"brass handles": :mod:`asset_pipeline.procedural.attributes`);
 :func:`synthesise_proxy` builds a proxy (:mod:`asset_pipeline.procedural.proxies`) for a
 category no generator makes. Both write the asset into the library under a **content-addressed
 id**, ``<category>_<hash12>``: the hash covers the kind (asset or proxy), the category, the size
@@ -61,6 +62,9 @@ class Synthesis:
     notes: tuple[str, ...] = ()
     family: str | None = None  # a proxy's family
     folder: str = field(default="", repr=False)
+    parts_how: dict[str, str] = field(default_factory=dict)
+    """Per part asked (``handles``, ``legs``...): how it was honoured (``"brass on the handles
+    (8 parts)"``) or why not (``"not honoured: this sofa has no handles"``)."""
 
 
 def generator_for(category: str | None) -> str | None:
@@ -128,7 +132,7 @@ def synthesise(
     """The asset of registered procedural ``category`` at ``size`` (x, y, z; None: default) in
     style ``seed`` with ``attributes``, in the library at ``root`` (written if new)."""
     from asset_pipeline.procedural import DEFAULT_LIBRARY_VERSION, category_info, generate_asset
-    from asset_pipeline.procedural.attributes import Attributes
+    from asset_pipeline.procedural.attributes import Attributes, parts_report
 
     name = category_info(category).name
     fitted, notes = fit_size(name, size)
@@ -160,6 +164,7 @@ def synthesise(
         library=Path(root),
         notes=tuple(notes),
         folder=folder,
+        parts_how=parts_report(name, fitted, int(seed), wanted),
     )
 
 
@@ -209,6 +214,7 @@ def synthesise_proxy(
         notes=tuple(notes),
         family=family,
         folder=folder,
+        parts_how={p.role: "not honoured: a proxy has no parts" for p in wanted.parts},
     )
 
 

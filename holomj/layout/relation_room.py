@@ -5,7 +5,8 @@ of constraints), so an optional object of the room's template (a potted plant, a
 armchair) can take the wall that "four bookshelves against the walls" needed. When a prompt
 relation does not hold, the room is solved again without some of the optional objects (neither
 defining nor asked for), the largest first; the new layout is kept only if it holds more of the
-prompt's relations and places every object that is not left out. What was left out, and why, is returned for the record: nothing is dropped silently.
+prompt's relations and places every object that is not left out. What was left out, and why,
+is returned for the record: nothing is dropped silently.
 """
 
 from __future__ import annotations

@@ -73,6 +73,17 @@ def scene_material(name: str) -> str:
     return f"material/{name}"
 
 
+def scene_uv_material(name: str) -> str:
+    """A textured scene material as worn by meshes with their own texture coordinates (slabs)."""
+    return f"material/{name}/uv"
+
+
+def scene_face_material(name: str, width: float, height: float) -> str:
+    """A textured scene material as worn by boxes whose large faces are ``width`` x ``height``
+    metres (wall pieces)."""
+    return f"material/{name}/{width:g}x{height:g}"
+
+
 def scene_texture(name: str) -> str:
     """The texture of a scene material."""
     return f"texture/{name}"

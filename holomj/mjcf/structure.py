@@ -33,10 +33,13 @@ def add_ground(ctx: BuildContext) -> None:
 
 
 def add_floors_and_ceilings(ctx: BuildContext) -> None:
-    """A textured visual slab per room (any simple polygon), and ceilings if asked for."""
+    """A textured visual slab per room (any simple polygon), and ceilings if asked for.
+
+    Floor and ceiling slabs carry texture coordinates in units of their material's tile, so a
+    texture (the material's own, or the procedural pattern its name calls for: planks for a
+    wood floor, tiles, carpet...) keeps its physical size.
+    """
     for room in ctx.scene.rooms:
-        material = ctx.scene.materials.get(room.floor_material)
-        tile = material.texture_size_m if material else 1.0
         _add_slab(
             ctx,
             mesh_name=names.floor_mesh(room.id),
@@ -44,8 +47,8 @@ def add_floors_and_ceilings(ctx: BuildContext) -> None:
             points=room.polygon,
             bottom=-FLOOR_THICKNESS,
             top=0.0,
-            tile=tile,
-            material=ctx.scene_material(room.floor_material),
+            tile=ctx.texture_tile(room.floor_material),
+            material=ctx.scene_material(room.floor_material, uv=True),
             default="visual",
             info=f"floor of room {room.id}",
         )
@@ -57,8 +60,8 @@ def add_floors_and_ceilings(ctx: BuildContext) -> None:
                 points=room.polygon,
                 bottom=ctx.scene.wall_height,
                 top=ctx.scene.wall_height + CEILING_THICKNESS,
-                tile=1.0,
-                material=ctx.scene_material(room.ceiling_material),
+                tile=ctx.texture_tile(room.ceiling_material),
+                material=ctx.scene_material(room.ceiling_material, uv=True),
                 default="ceiling",
                 info=f"ceiling of room {room.id}",
             )
@@ -160,7 +163,10 @@ def add_walls(
                     pos=clean([mid[0] + offset[0], mid[1] + offset[1], (span.z0 + span.z1) / 2]),
                     quat=clean(yaw_quat(wall.yaw)),
                     size=clean([(t1 - t0) / 2, thickness / 2, (span.z1 - span.z0) / 2]),
-                    material=ctx.scene_material(ctx.scene.room(str(room_id)).wall_material),
+                    material=ctx.scene_material(
+                        ctx.scene.room(str(room_id)).wall_material,
+                        face=(t1 - t0, span.z1 - span.z0),
+                    ),
                 )
                 geom.info = f"{wall.id} between {' and '.join(wall.rooms)}"
 

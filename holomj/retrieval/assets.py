@@ -26,11 +26,13 @@ Embeddings of asset texts and thumbnails are cached in ``LIB/.cache/retrieval/``
 
 **Assets on demand** (with a ``synthesiser``, :class:`holomj.jobs.synthesis.LibrarySynthesiser`,
 as ``generate`` passes one): :meth:`AssetRetriever.choose` reads the attributes the description
-asks (colour, material, shape, style) and
+asks (colour, material, shape, style, and the colour or material of parts: ``"brass handles"``
+reads ``{"handles.material": "brass"}``) and
 
 - when the category (or an alias) has library assets, chooses among those whose attributes
-  (recorded, else read from their description) match the colour, material and shape asked
-  ("library match"); when none does, it synthesises one of that category with them
+  (recorded, else read from their description) match the colour, material, shape and part
+  attributes asked ("library match"); when none does, it synthesises one of that category with
+  them (each pick says per part how it was honoured, or why not: ``attributes_how``)
   ("synthesised"), or, without a generator for the category, takes the best asset and says the
   attributes were not honoured ("library");
 - when the category has no library asset, it synthesises one if a generator exists, else takes
@@ -64,6 +66,15 @@ from holomj.library.store import (
     normalise_category,
 )
 from holomj.retrieval.cache import EmbeddingCache, cache_file, content_key
+from holomj.retrieval.index import (
+    FULL_PRODUCT_SHARE,
+    AssetIndex,
+    approximate_text_scores,
+    exact_text_scores,
+    shortlist,
+    size_discrepancies,
+    text_error_bound,
+)
 from holomj.retrieval.text import TextEncoder
 from holomj.retrieval.visual import VisualScorer, best_view_score, visual_scorer_from_env
 from holomj.spec.assets import PLACEMENTS
@@ -76,6 +87,8 @@ kettlebell/pot do not). Listed aliases (``category_aliases.json``) always pass."
 SYNTH_STYLES = 4
 """Style seeds an asset made on demand is drawn from (the run's generator picks one)."""
 ON_DEMAND_SOURCES = frozenset({"holomj synthesised", "holomj proxy"})
+KEPT_PRODUCTS = 8
+"""Descriptions whose scores against the whole embedding matrix a retriever keeps."""
 VARIED_POOL = 3
 """``varied``: instances draw from the best asset and up to this many more of its category."""
 NO_CLIP_NOTE = (
@@ -107,6 +120,8 @@ class ScoredAsset:
     attributes_asked: dict[str, str] | None = None
     attributes_honoured: dict[str, str] | None = None
     proxy: bool = False
+    attributes_how: dict[str, str] | None = None
+    """Per part asked (``handles``...): how it was honoured, or why not."""
 
 
 def asset_text(asset: LibraryAsset) -> str:
@@ -167,7 +182,14 @@ def size_discrepancy(
 
 
 class AssetRetriever:
-    """Ranks and chooses a library's assets for object descriptions."""
+    """Ranks and chooses a library's assets for object descriptions.
+
+    The per-asset arrays (:class:`~holomj.retrieval.index.AssetIndex`) and the text embedding
+    matrix are built once, on first use; a query embedding is computed once per description.
+    Without the visual term, the best ``limit`` candidates are found from one float32 matrix
+    product and then scored exactly (:mod:`holomj.retrieval.index`): the same results as
+    scoring every candidate exactly, at a fraction of the cost on a large library.
+    """
 
     def __init__(
         self,
@@ -186,11 +208,15 @@ class AssetRetriever:
         self._encoder = encoder
         self._visual = visual
         self._assets = [library.get(i) for i in library.ids() if i != BUILTIN_BOX]
-        self._index = {a.meta.id: k for k, a in enumerate(self._assets)}
+        self._index_of = {a.meta.id: k for k, a in enumerate(self._assets)}
+        self._table: AssetIndex | None = None
         self._text_matrix: np.ndarray | None = None
+        self._max_norm = 0.0
         self._views: list[np.ndarray] | None = None
         self._text_queries: dict[str, np.ndarray] = {}
         self._visual_queries: dict[str, np.ndarray] = {}
+        self._recorded: dict[int, dict[str, str]] = {}
+        self._products: dict[str, np.ndarray] = {}
         if visual is None:
             self._note(NO_CLIP_NOTE)
 
@@ -202,6 +228,13 @@ class AssetRetriever:
 
             self._encoder = text_encoder()
         return self._encoder
+
+    @property
+    def index(self) -> AssetIndex:
+        """The per-asset arrays (built on first use)."""
+        if self._table is None:
+            self._table = AssetIndex.build(self._assets, ON_DEMAND_SOURCES)
+        return self._table
 
     def _note(self, note: str) -> None:
         if note not in self.notes:
@@ -223,10 +256,8 @@ class AssetRetriever:
         """
         if limit < 1:
             raise InputError(f"limit must be at least 1, got {limit}", where="rank")
-        candidates = self._candidates(description, placement, category)
-        scored = self._score(description, size, candidates)
-        scored.sort(key=lambda s: (-s.score, s.asset_id))
-        return scored[:limit]
+        rows = self._candidates(description, placement, category)
+        return self._top(description, size, rows, limit)
 
     def choose(
         self,
@@ -255,24 +286,24 @@ class AssetRetriever:
             return self._choose_on_demand(
                 description, quantity, variance, rng, size, placement, category
             )
-        ranking = self.rank(
-            description,
-            size=size,
-            placement=placement,
-            category=category,
-            limit=max(1, len(self._assets)),
-        )
-        return self._pick(ranking, quantity, variance, rng)
+        rows = self._candidates(description, placement, category)
+        return self._pick(description, size, rows, quantity, variance, rng)
 
     def _pick(
-        self, ranking: list[ScoredAsset], quantity: int, variance: str, rng: np.random.Generator
+        self,
+        description: str,
+        size: tuple[float, float, float] | None,
+        rows: np.ndarray,
+        quantity: int,
+        variance: str,
+        rng: np.random.Generator,
     ) -> list[ScoredAsset]:
-        """``quantity`` picks from ``ranking`` (best first), as :meth:`choose` describes."""
-        best = ranking[0]
+        """``quantity`` picks among ``rows``, as :meth:`choose` describes."""
+        best = self._top(description, size, rows, 1)[0]
         if variance == "same" or quantity == 1:
             return [best] * quantity
-        same_kind = [s for s in ranking if s.category == best.category]
-        pool = same_kind[: 1 + max(quantity - 1, VARIED_POOL)]
+        same_kind = self.index.of_category_name(rows, best.category)
+        pool = self._top(description, size, same_kind, 1 + max(quantity - 1, VARIED_POOL))
         extra = min(quantity - 1, len(pool) - 1)
         picks = [best]
         if extra > 0:
@@ -297,29 +328,28 @@ class AssetRetriever:
         syn = self.synthesiser
         asked = syn.parse(description, category)
         hard = {k: v for k, v in asked.items() if k != "style"}
-        candidates = self._own_candidates(description, placement, category)
-        if category is None and candidates:
-            best = self._ranked(description, size, candidates)[0]
-            category = best.category
-            candidates = [a for a in candidates if a.meta.category == category]
-        if candidates:
-            ranking = self._ranked(description, size, candidates)
+        rows = self._own_candidates(description, placement, category)
+        if category is None and rows.size:
+            category = self._top(description, size, rows, 1)[0].category
+            rows = self.index.of_category_name(rows, category)
+        if rows.size:
             if not hard:
-                picks = self._pick(ranking, quantity, variance, rng)
+                picks = self._pick(description, size, rows, quantity, variance, rng)
                 return [self._labelled(p, "library", asked) for p in picks]
-            matching = [
-                s for s in ranking if _matches(syn.recorded(self.library.get(s.asset_id)), hard)
-            ]
-            if matching:
-                picks = self._pick(matching, quantity, variance, rng)
+            matching = np.array(
+                [r for r in rows if _matches(self._recorded_of(int(r)), hard)], dtype=np.int64
+            )
+            if matching.size:
+                picks = self._pick(description, size, matching, quantity, variance, rng)
                 return [self._labelled(p, "library match", asked) for p in picks]
-            generator = syn.generator_for(category) or syn.generator_for(ranking[0].category)
+            best = self._top(description, size, rows, 1)[0]
+            generator = syn.generator_for(category) or syn.generator_for(best.category)
             if generator is None:
                 self._note(
-                    f"no {ranking[0].category} asset is {_words(hard)} and no generator makes "
-                    f"one: {description!r} gets the best {ranking[0].category} as it is"
+                    f"no {best.category} asset is {_words(hard)} and no generator makes "
+                    f"one: {description!r} gets the best {best.category} as it is"
                 )
-                picks = self._pick(ranking, quantity, variance, rng)
+                picks = self._pick(description, size, rows, quantity, variance, rng)
                 return [self._labelled(p, "library", asked) for p in picks]
             return [self._synthesised(description, generator, size, asked, rng)] * quantity
         generator = syn.generator_for(category)
@@ -332,54 +362,56 @@ class AssetRetriever:
                 f"{self.library.name!r}: its near synonym {similar!r} stands in for "
                 f"{description!r}"
             )
-            pool = [
-                a
-                for a in self._placed(placement)
-                if normalise_category(a.meta.category) == normalise_category(similar)
-            ]
-            ranking = self._ranked(description, size, pool)
-            picks = self._pick(ranking, quantity, variance, rng)
+            pool = self.index.of_categories(self._placed(placement), {normalise_category(similar)})
+            picks = self._pick(description, size, pool, quantity, variance, rng)
             return [self._labelled(p, "similar category", asked) for p in picks]
         return [self._proxy(description, category, size, placement, asked)] * quantity
 
-    def _placed(self, placement: str) -> list[LibraryAsset]:
-        return [
-            a
-            for a in self._assets
-            if placement in a.meta.placement and a.meta.source not in ON_DEMAND_SOURCES
-        ]
+    def _recorded_of(self, row: int) -> dict[str, str]:
+        """The attributes an asset records (or its description says), read once."""
+        if row not in self._recorded:
+            self._recorded[row] = self.synthesiser.recorded(self._assets[row])
+        return self._recorded[row]
 
-    def _own_candidates(
-        self, description: str, placement: str, category: str | None
-    ) -> list[LibraryAsset]:
-        """The library's own assets (none made on demand) of ``category`` or its aliases."""
+    def _placed(self, placement: str) -> np.ndarray:
+        """Mask of the library's own assets (none made on demand) allowing ``placement``."""
+        return self.index.placed(placement, own_only=True)
+
+    def _own_candidates(self, description: str, placement: str, category: str | None) -> np.ndarray:
+        """Rows of the library's own assets (none made on demand) of ``category`` or its
+        aliases."""
         _check_placement(placement, description)
         placed = self._placed(placement)
         if category is None:
-            return placed
+            return np.flatnonzero(placed)
         key = normalise_category(category)
-        exact = [a for a in placed if normalise_category(a.meta.category) == key]
-        if exact:
+        exact = self.index.of_categories(placed, {key})
+        if exact.size:
             return exact
         aliases = {normalise_category(c) for c in category_aliases().get(key, [])}
-        return [a for a in placed if normalise_category(a.meta.category) in aliases]
-
-    def _ranked(
-        self,
-        description: str,
-        size: tuple[float, float, float] | None,
-        candidates: Sequence[LibraryAsset],
-    ) -> list[ScoredAsset]:
-        scored = self._score(description, size, candidates)
-        scored.sort(key=lambda s: (-s.score, s.asset_id))
-        return scored
+        return self.index.of_categories(placed, aliases)
 
     def _labelled(self, pick: ScoredAsset, how: str, asked: dict[str, str]) -> ScoredAsset:
         honoured: dict[str, str] = {}
         if asked and how == "library match":
-            recorded = self.synthesiser.recorded(self.library.get(pick.asset_id))
+            recorded = self._recorded_of(self._index_of[pick.asset_id])
             honoured = {k: v for k, v in asked.items() if recorded.get(k) == v}
-        return replace(pick, how=how, attributes_asked=asked, attributes_honoured=honoured)
+        parts = {k.partition(".")[0] for k in asked if "." in k}
+        parts_how = {
+            role: (
+                "recorded by the library asset"
+                if any(k.startswith(f"{role}.") for k in honoured)
+                else f"not honoured: the {how} asset does not record it"
+            )
+            for role in sorted(parts)
+        }
+        return replace(
+            pick,
+            how=how,
+            attributes_asked=asked,
+            attributes_honoured=honoured,
+            attributes_how=parts_how or None,
+        )
 
     def _synthesised(
         self,
@@ -443,6 +475,7 @@ class AssetRetriever:
             how=how,
             attributes_asked=asked,
             attributes_honoured=dict(made.attributes_honoured),
+            attributes_how=dict(getattr(made, "parts_how", {}) or {}) or None,
             proxy=how == "proxy",
         )
 
@@ -451,7 +484,7 @@ class AssetRetriever:
         is at least :data:`SIMILARITY_FLOOR`; else None."""
         if category is None:
             return None
-        names = sorted({a.meta.category for a in self._placed(placement)})
+        names = sorted(set(self.index.categories[self._placed(placement)].tolist()))
         if not names:
             return None
         wanted = self._category_vector(category)
@@ -470,70 +503,92 @@ class AssetRetriever:
 
     # -- candidates -------------------------------------------------------------------------
 
-    def _candidates(
-        self, description: str, placement: str, category: str | None
-    ) -> list[LibraryAsset]:
+    def _candidates(self, description: str, placement: str, category: str | None) -> np.ndarray:
         _check_placement(placement, description)
-        placed = [a for a in self._assets if placement in a.meta.placement]
-        if not placed:
+        placed = self.index.placed(placement)
+        if not placed.any():
             raise InputError(
                 f"no {placement} asset in library {self.library.name!r} for {description!r}",
                 where=str(self.library.root),
                 fix="import one with 'holomj assets import' or use another library",
             )
         if category is None:
-            return placed
+            return np.flatnonzero(placed)
         key = normalise_category(category)
-        exact = [a for a in placed if normalise_category(a.meta.category) == key]
-        if exact:
+        exact = self.index.of_categories(placed, {key})
+        if exact.size:
             return exact
         aliases = {normalise_category(c) for c in category_aliases().get(key, [])}
-        aliased = [a for a in placed if normalise_category(a.meta.category) in aliases]
-        if aliased:
+        aliased = self.index.of_categories(placed, aliases)
+        if aliased.size:
             return aliased
         self._note(
             f"no {placement} asset of category {category!r} (or its aliases) in library "
             f"{self.library.name!r}: every {placement} asset was scored for {description!r}"
         )
-        return placed
+        return np.flatnonzero(placed)
 
     # -- scores -----------------------------------------------------------------------------
 
-    def _score(
+    def _top(
         self,
         description: str,
         size: tuple[float, float, float] | None,
-        candidates: Sequence[LibraryAsset],
+        rows: np.ndarray,
+        limit: int | None,
     ) -> list[ScoredAsset]:
-        rows = np.array([self._index[a.meta.id] for a in candidates])
-        # Row-wise products and sums: equal rows give bit-equal scores (a BLAS product may not).
-        vectors = self._text_vectors()[rows].astype(np.float64)
-        text = (vectors * self._text_query(description).astype(np.float64)).sum(axis=1)
+        """The ``limit`` best of ``rows`` (None: all), best first, ties by asset id."""
+        rows = np.asarray(rows, dtype=np.int64)
         if size is None:
-            sizes = np.zeros(len(candidates))
+            sizes = np.zeros(rows.size)
         else:
             requested = _check_size(size, description)
-            sizes = np.array([size_discrepancy(requested, a.meta.size) for a in candidates])
-        visual = self._visual_terms(description, rows)
+            sizes = size_discrepancies(requested, self.index.sizes[rows], SIZE_CAP_M)
         w = self.weights
+        visual = self._visual_terms(description, rows)
         text_weight = w.text if visual is not None else w.text + w.visual
+        matrix = self._text_vectors()
+        query = self._text_query(description)
+        if visual is None and limit is not None and limit < rows.size:
+            approximate = text_weight * self._approximate(description, rows)
+            error = abs(text_weight) * text_error_bound(matrix.shape[1], self._max_norm, query)
+            keep = shortlist(approximate - w.size * sizes, limit, error)
+            rows, sizes = rows[keep], sizes[keep]
+        text = exact_text_scores(matrix, query, rows)
         score = text_weight * text - w.size * sizes
         if visual is not None:
             known = np.array([v is not None for v in visual])
             values = np.array([v if v is not None else np.nan for v in visual], dtype=np.float64)
             neutral = float(np.median(values[known]))
             score = score + w.visual * np.where(known, values, neutral)
+        order = self.index.order(rows, score)
+        if limit is not None:
+            order = order[:limit]
         return [
             ScoredAsset(
-                asset_id=a.meta.id,
-                category=a.meta.category,
+                asset_id=self.index.ids[int(rows[k])],
+                category=str(self.index.categories[int(rows[k])]),
                 score=float(score[k]),
                 visual=None if visual is None else visual[k],
                 text=float(text[k]),
                 size=float(sizes[k]),
             )
-            for k, a in enumerate(candidates)
+            for k in order
         ]
+
+    def _approximate(self, description: str, rows: np.ndarray) -> np.ndarray:
+        """Approximate T of ``rows``; a product with the whole matrix is kept for the last
+        :data:`KEPT_PRODUCTS` descriptions (``choose`` ranks twice, instances rank again)."""
+        matrix, query = self._text_vectors(), self._text_query(description)
+        if rows.size <= FULL_PRODUCT_SHARE * matrix.shape[0]:
+            return approximate_text_scores(matrix, query, rows)
+        if description not in self._products:
+            if len(self._products) >= KEPT_PRODUCTS:
+                del self._products[next(iter(self._products))]
+            self._products[description] = approximate_text_scores(
+                matrix, query, np.arange(matrix.shape[0])
+            )
+        return self._products[description][rows]
 
     def _text_query(self, description: str) -> np.ndarray:
         if description not in self._text_queries:
@@ -546,11 +601,12 @@ class AssetRetriever:
             texts = [asset_text(a) for a in self._assets]
             keys = [content_key(encoder.name, t) for t in texts]
             cache = self._cache(encoder.name)
-            self._text_matrix = cache.fetch(
-                keys, lambda idx: encoder.encode([texts[i] for i in idx])
-            )
+            matrix = cache.fetch(keys, lambda idx: encoder.encode([texts[i] for i in idx]))
             for note in cache.notes:
                 self._note(note)
+            self._text_matrix = np.ascontiguousarray(matrix, dtype=np.float32)
+            if matrix.size:
+                self._max_norm = float(np.sqrt((matrix.astype(np.float64) ** 2).sum(1).max()))
         return self._text_matrix
 
     def _cache(self, model_name: str) -> EmbeddingCache:

@@ -35,6 +35,11 @@ BATCH_SIZE = 64
 # A batch also stops growing once (texts x longest text) reaches this many tokens: texts are
 # sorted by length, so a few long ones are not run with 60 short ones padded to their length.
 BATCH_TOKENS = 2048
+# Work this small (texts x longest text, in tokens: one query) runs on one thread: spreading a
+# few hundred multiply-adds over several threads costs more in synchronisation than it saves,
+# and much more on a busy machine (one query: 20 ms on one thread, 140-460 ms on two, measured
+# on a loaded 2-core host).
+SINGLE_THREAD_TOKENS = 256
 _TRANSFORMER = "sentence_transformers.models.Transformer"
 _POOLING = "sentence_transformers.models.Pooling"
 _NORMALIZE = "sentence_transformers.models.Normalize"
@@ -190,16 +195,24 @@ class MiniLMEncoder:
             ids = [e.ids for e in encodings]
             order = sorted(range(len(ids)), key=lambda i: -len(ids[i]))
             out = np.empty((len(ids), self.dim), dtype=np.float32)
-            with torch.inference_mode():
-                for chosen in self._batches(order, [len(i) for i in ids]):
-                    longest = len(ids[chosen[0]])
-                    batch = np.full((len(chosen), longest), self._pad_id, dtype=np.int64)
-                    mask = np.zeros((len(chosen), longest), dtype=bool)
-                    for row, i in enumerate(chosen):
-                        batch[row, : len(ids[i])] = ids[i]
-                        mask[row, : len(ids[i])] = True
-                    vectors = self._forward(torch.from_numpy(batch), torch.from_numpy(mask))
-                    out[chosen] = vectors.numpy()
+            threads = torch.get_num_threads()
+            small = len(ids) * len(ids[order[0]]) <= SINGLE_THREAD_TOKENS
+            if small and threads > 1:
+                torch.set_num_threads(1)
+            try:
+                with torch.inference_mode():
+                    for chosen in self._batches(order, [len(i) for i in ids]):
+                        longest = len(ids[chosen[0]])
+                        batch = np.full((len(chosen), longest), self._pad_id, dtype=np.int64)
+                        mask = np.zeros((len(chosen), longest), dtype=bool)
+                        for row, i in enumerate(chosen):
+                            batch[row, : len(ids[i])] = ids[i]
+                            mask[row, : len(ids[i])] = True
+                        vectors = self._forward(torch.from_numpy(batch), torch.from_numpy(mask))
+                        out[chosen] = vectors.numpy()
+            finally:
+                if small and threads > 1:
+                    torch.set_num_threads(threads)
         return out
 
     def _batches(self, order: list[int], lengths: list[int]) -> list[list[int]]:

@@ -120,6 +120,11 @@ class AssetMeta(FrozenModel):
         description="A stand-in built from a parametric family (box, slab on legs, column...) "
         "for a category no library asset or generator supplies; labelled with that category.",
     )
+    collider_gap_m: Annotated[float, Field(ge=0.0)] | None = Field(
+        default=None,
+        description="Largest distance from a point of the visual surface to the union of the "
+        "colliders, metres (asset_pipeline.collider_audit); None when not measured.",
+    )
 
     @property
     def collision_volume_m3(self) -> float:

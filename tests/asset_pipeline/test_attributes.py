@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from asset_pipeline.procedural import generate_asset
@@ -9,9 +11,12 @@ from asset_pipeline.procedural.attributes import (
     COLOURS,
     MATERIALS,
     Attributes,
+    PartAttributes,
     attributes_from_text,
     colour_rgb,
+    parts_report,
 )
+from tests.asset_pipeline.look_helpers import shows
 
 
 @pytest.mark.parametrize(
@@ -64,7 +69,7 @@ def test_pink_velvet_sofa_has_pink_upholstery() -> None:
     assert pink.meta.attributes == {"colour": "pink", "material": "velvet"}
     assert "pink velvet" in pink.meta.description and "sofa" in pink.meta.description
     (upholstery,) = _visual(pink, "pink_velvet")
-    assert upholstery.rgba[:3] == pytest.approx(COLOURS["pink"], abs=1e-3)
+    assert shows(upholstery, COLOURS["pink"], 1e-3)
     assert upholstery.specular == MATERIALS["velvet"].specular
     # the upholstery is the sofa's largest surface: its file is the biggest mesh
     assert len(pink.files[upholstery.mesh]) == max(
@@ -81,19 +86,19 @@ def test_black_leather_armchair_and_white_wardrobe() -> None:
         "armchair", "a", None, 1, attributes_from_text("a black leather armchair")
     )
     assert "black leather" in chair.meta.description
-    assert _visual(chair, "black_leather")[0].rgba[:3] == pytest.approx(COLOURS["black"])
+    assert shows(_visual(chair, "black_leather")[0], COLOURS["black"])
     wardrobe = generate_asset("wardrobe", "w", None, 0, attributes_from_text("a white wardrobe"))
     assert "white" in wardrobe.meta.description
     # the carcass (largest surface) is white
     body = max(wardrobe.meta.visual, key=lambda v: len(wardrobe.files[v.mesh]))
-    assert body.rgba[:3] == pytest.approx(COLOURS["white"])
+    assert shows(body, COLOURS["white"])
 
 
 def test_bed_frame_not_bedding_takes_the_colour() -> None:
     bed = generate_asset("bed", "b", None, 0, Attributes(colour="blue"))
     linen = [v for v in bed.meta.visual if v.mesh == "linen.obj"]
-    assert linen and linen[0].rgba[:3] != pytest.approx(COLOURS["blue"])
-    assert any(v.rgba[:3] == pytest.approx(COLOURS["blue"]) for v in bed.meta.visual)
+    assert linen and not shows(linen[0], COLOURS["blue"])
+    assert any(shows(v, COLOURS["blue"]) for v in bed.meta.visual)
 
 
 @pytest.mark.parametrize("category", ["coffee_table", "side_table", "dining_table"])
@@ -142,7 +147,7 @@ def test_style_biases_the_main_material() -> None:
     sofa = generate_asset("sofa", "s", None, 0, Attributes(style="victorian"))
     assert sofa.meta.attributes == {"style": "victorian"}
     assert "velvet" in sofa.meta.description and "victorian" in sofa.meta.description
-    assert any(v.rgba[:3] == pytest.approx(colour_rgb("burgundy")) for v in sofa.meta.visual)
+    assert any(shows(v, colour_rgb("burgundy")) for v in sofa.meta.visual)
 
 
 def test_conditioned_synthesis_is_deterministic() -> None:
@@ -154,3 +159,124 @@ def test_conditioned_synthesis_is_deterministic() -> None:
     assert generate_asset("armchair", "a", None, 3, Attributes()) == generate_asset(
         "armchair", "a", None, 3
     )
+
+
+# --- part attributes -----------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "category", "expected"),
+    [
+        ("white kitchen cabinets with brass handles", "kitchen_cabinet",
+         {"colour": "white", "handles.material": "brass"}),
+        ("a wooden table with metal legs", "dining_table",
+         {"material": "wood", "legs.material": "metal"}),
+        ("a sofa with wooden legs", "sofa", {"legs.material": "wood"}),
+        ("a chair with a red seat", "dining_chair", {"seat.colour": "red"}),
+        ("a lamp with a white shade", "floor_lamp", {"shade.colour": "white"}),
+        ("a desk with black drawers", "desk", {"drawers.colour": "black"}),
+        ("a coffee table with a glass top and black metal legs", "coffee_table",
+         {"top.material": "glass", "legs.colour": "black", "legs.material": "metal"}),
+        ("a glass-topped coffee table", None, {"top.material": "glass"}),
+        ("a glass top coffee table", "coffee_table", {"top.material": "glass"}),
+        # inside a hyphenated word only its own words are the part's
+        ("a black metal-legged table", None, {"colour": "black", "legs.material": "metal"}),
+        ("a table with legs in black metal, and a marble top", None,
+         {"top.material": "marble", "legs.colour": "black", "legs.material": "metal"}),
+        ("an off-white sofa with blue velvet cushions", "sofa",
+         {"colour": "off-white", "cushions.colour": "blue", "cushions.material": "velvet"}),
+        # a part noun followed by another noun is not a part ("base cabinet", "top shelf")
+        ("a white base cabinet", None, {"colour": "white"}),
+        ("a lamp on top of the desk", None, {}),
+        ("a desk with drawers", "desk", {}),
+        # a category's own words are never a part: a picture frame is not asked a frame colour
+        ("a black picture frame", "picture_frame", {"colour": "black"}),
+    ],
+)  # fmt: skip
+def test_part_attributes_from_text(text: str, category: str | None, expected: dict) -> None:
+    assert attributes_from_text(text, category).to_dict() == expected
+
+
+def test_attributes_round_trip_with_parts() -> None:
+    asked = attributes_from_text("a round white table with a glass top and oak legs")
+    assert Attributes.from_dict(asked.to_dict()) == asked
+    assert asked.hard == {k: v for k, v in asked.to_dict().items() if k != "style"}
+    assert "legs.material=oak" in asked.key()
+    assert Attributes.from_dict({"wings.colour": "red", "colour": "red"}).to_dict() == {
+        "colour": "red"
+    }  # unknown parts are ignored, as unknown keys are
+    with pytest.raises(ValueError):
+        PartAttributes("legs")  # neither colour nor material
+
+
+def _by_name(bundle, needle: str):
+    return [v for v in bundle.meta.visual if needle in v.mesh]
+
+
+def test_part_request_recolours_only_those_parts() -> None:
+    asked = attributes_from_text("white kitchen cabinets with brass handles", "kitchen_cabinet")
+    for seed in range(3):
+        cabinet = generate_asset("kitchen_cabinet", "k", None, seed, asked)
+        (handles,) = _by_name(cabinet, "__handles_")
+        assert shows(handles, MATERIALS["brass"].rgba[:3])
+        others = [v for v in cabinet.meta.visual if v is not handles]
+        assert all(shows(v, COLOURS["white"]) for v in others)
+        assert cabinet.meta.attributes == {"colour": "white", "handles.material": "brass"}
+        assert "brass handles" in cabinet.meta.description
+
+
+def test_design_is_redrawn_until_it_has_the_part() -> None:
+    asked = attributes_from_text("a sofa with wooden legs", "sofa")
+    for seed in range(6):
+        report = parts_report("sofa", None, seed, asked)
+        assert report["legs"].startswith("wooden on the legs (4 parts)")
+
+
+def test_a_missing_part_is_reported_not_faked() -> None:
+    asked = attributes_from_text("a sofa with brass handles", "sofa")
+    sofa = generate_asset("sofa", "s", None, 0, asked)
+    assert sofa.meta.attributes == {}
+    assert not _by_name(sofa, "__handles_")
+    assert parts_report("sofa", None, 0, asked) == {
+        "handles": "not honoured: this sofa has no handles"
+    }
+
+
+def test_a_stand_in_part_is_said() -> None:
+    asked = attributes_from_text("a round coffee table with black legs", "coffee_table")
+    table = generate_asset("coffee_table", "t", (0.8, 0.8, 0.42), 0, asked)
+    assert table.meta.attributes == {"shape": "round", "legs.colour": "black"}
+    report = parts_report("coffee_table", (0.8, 0.8, 0.42), 0, asked)
+    assert report["legs"].startswith("black on the base") and "has no legs" in report["legs"]
+    assert "black" in table.meta.description
+
+
+def test_object_colour_goes_to_the_parts_no_request_names() -> None:
+    asked = attributes_from_text("a wooden table with a glass top", "dining_table")
+    for seed in range(4):
+        table = generate_asset("dining_table", "t", None, seed, asked)
+        (top,) = _by_name(table, "__top_")
+        assert top.rgba[3] < 1.0  # glass
+        rest = [v for v in table.meta.visual if v is not top]
+        assert any(shows(v, MATERIALS["wood"].rgba[:3]) for v in rest)
+
+
+def test_role_tags_do_not_change_the_assets() -> None:
+    from asset_pipeline.procedural.assembly import assemble
+    from asset_pipeline.procedural.registry import design_for
+    from asset_pipeline.procedural.roles import role_of, untagged
+
+    for category in ("sofa", "dining_chair", "desk", "kitchen_cabinet", "floor_lamp", "bed"):
+        design, size = design_for(category, "a", None, 1)
+        assert any(role_of(p) for p in design.parts)
+        plain = replace(design, parts=tuple(untagged(p) for p in design.parts))
+        tagged_bundle, plain_bundle = assemble(design, size), assemble(plain, size)
+        assert tagged_bundle.files == plain_bundle.files
+        assert tagged_bundle.meta == plain_bundle.meta
+
+
+def test_l_shaped_desk() -> None:
+    desk = generate_asset("desk", "d", (0.7, 1.4, 0.75), 0, Attributes(shape="l-shaped"))
+    assert desk.meta.attributes == {"shape": "l-shaped"}
+    assert desk.meta.size == (0.9, 1.4, 0.75)  # as deep as a desk may be: the return shows
+    tops = [s for s in desk.meta.surfaces if s.height > 0.7]
+    assert len(tops) == 2 and 0.4 < sum(s.area_m2 for s in tops) / (0.9 * 1.4) < 0.9
+    assert "l-shaped" in desk.meta.description

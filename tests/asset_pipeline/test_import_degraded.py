@@ -145,10 +145,10 @@ def test_degraded_results_cross_worker_processes(
     summary = run_imports(jobs, library, options, workers=2, thumbnails=False)
     assert sorted((o.asset_id, o.ok, o.degraded) for o in summary.outcomes) == [
         ("ring", True, True),
-        ("ring_2", True, True),
+        ("ring-2", True, True),
     ]
     assert summary.to_dict()["degraded"] == 2
-    assert all(_derivation(library, i)["degraded"] for i in ("ring", "ring_2"))
+    assert all(_derivation(library, i)["degraded"] for i in ("ring", "ring-2"))
     assert not (library / CACHE_DIR / summary.outcomes[0].cache_key).exists()
     assert _pending(library) == []
 

@@ -91,7 +91,9 @@ def test_import_is_in_the_asset_frame_with_good_hulls(
 def test_mug_is_a_mug_of_plausible_mass(imports: dict) -> None:
     imported = imports["mug"]
     assert imported.bundle.meta.category == "mug"
-    assert 0.15 <= imported.bundle.meta.mass <= 0.6
+    assert 0.15 <= imported.bundle.meta.mass <= 0.8  # a large mug, 12.5 cm across
+    derivation = imported.report["physical"]["mass_derivation"]
+    assert derivation["material"] == "ceramic" and derivation["clamped"] is False
     assert imported.bundle.meta.placement == ["object"]
     assert imported.report["normalisation"]["up_axis"] == "y"
     assert imported.report["watertight"] is True
@@ -135,6 +137,11 @@ def test_bookcase_has_several_levels(imports: dict) -> None:
     levels = sorted({round(s.height, 2) for s in meta.surfaces})
     assert len(levels) >= 3
     assert meta.category == "bookshelf"
+    # The volume of its boards in wood: a plausible bookcase, derived and recorded.
+    assert 15.0 <= meta.mass <= 80.0
+    derivation = imports["bookcase"].report["physical"]["mass_derivation"]
+    assert derivation["method"] == "material density x material volume"
+    assert derivation["material"] == "wood" and derivation["clamped"] is False
 
 
 def test_import_is_byte_deterministic(shared_assets: Path, imports: dict) -> None:

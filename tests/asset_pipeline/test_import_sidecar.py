@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from asset_pipeline import physical
 from asset_pipeline.importer import ImportOptions, import_asset
 from holomj.errors import FormatError, SpecError
 from tests.asset_pipeline.import_helpers import LOW, box_obj
@@ -26,7 +27,12 @@ def test_defaults_without_sidecar(crate: Path) -> None:
     assert meta.description == "an object"
     assert meta.placement == ["object"]
     assert meta.license is None
-    assert meta.mass == pytest.approx(500.0 * 0.4 * 0.3 * 0.25, rel=1e-3)
+    # An unknown thing of unknown make-up: a 2 cm skin of 500 kg/m3 under its surface.
+    info = physical.category_info("object")
+    area = 2 * (0.4 * 0.3 + 0.4 * 0.25 + 0.3 * 0.25)
+    assert (info.density_kg_m3, info.wall_m) == (500.0, 0.02)
+    assert meta.mass == pytest.approx(500.0 * area * 0.02, rel=1e-3)
+    assert imported.report["physical"]["mass_derivation"]["bodies_hollowed_to_wall"] == 1
     assert imported.report["decomposition"]["method"] == "convex_bodies"
     assert imported.report["source"]["sidecar"] is None
 

@@ -137,8 +137,10 @@ def test_category_table_is_complete_and_sane() -> None:
         assert set(info.placement) <= {"floor", "wall", "object", "ceiling"}
     unknown = physical.category_info("spaceship", (2.0, 1.0, 1.0))
     assert not unknown.known and unknown.placement == ("floor",)
-    # Typical masses with typical hull volumes land in their ranges.
+    # Typical material volumes land in their ranges: a mug's 0.05 m2 of 5 mm ceramic wall,
+    # a sofa's 1.2 m3 of upholstery.
     mug = physical.category_info("mug")
-    assert mug.mass_range_kg[0] < mug.density_kg_m3 * 6e-4 < mug.mass_range_kg[1]
+    assert mug.wall_m is not None
+    assert mug.mass_range_kg[0] < mug.density_kg_m3 * 0.05 * mug.wall_m < mug.mass_range_kg[1]
     sofa = physical.category_info("sofa")
-    assert 25 < sofa.density_kg_m3 * 1.2 < 60
+    assert sofa.wall_m is None and 25 < sofa.density_kg_m3 * 1.2 < 60

@@ -126,11 +126,11 @@ def test_failure_midway_leaves_old_library(tmp_path: Path, monkeypatch: pytest.M
     real = library_writer._fill_bundle
     calls = []
 
-    def flaky(folder: Path, item: AssetBundle) -> None:
+    def flaky(folder: Path, item: AssetBundle, store: Path) -> None:
         calls.append(item.meta.id)
         if len(calls) % 2 == 0:  # the second asset of every write
             raise OSError("disk full")
-        real(folder, item)
+        real(folder, item, store)
 
     monkeypatch.setattr(library_writer, "_fill_bundle", flaky)
     with pytest.raises(OSError, match="disk full"):
@@ -178,3 +178,55 @@ def test_replacing_an_asset_writes_a_fresh_folder_before_committing(tmp_path: Pa
     lib = AssetLibrary.open(root)
     assert lib.get("a").root.name == "a-2"
     assert not (root / "a").exists()
+
+
+PNG_A = b"\x89PNG\r\n\x1a\n" + b"texture A" * 50
+PNG_B = b"\x89PNG\r\n\x1a\n" + b"texture B" * 50
+
+
+def textured(asset_id: str, png: bytes) -> AssetBundle:
+    base = bundle(asset_id)
+    meta = base.meta.model_copy(
+        update={"visual": [base.meta.visual[0].model_copy(update={"texture": "tex.png"})]}
+    )
+    return AssetBundle(meta=meta, files={**base.files, "tex.png": png})
+
+
+def test_shared_images_are_written_once_and_linked(tmp_path: Path) -> None:
+    root = write_library(
+        tmp_path / "lib", "t", [textured("a", PNG_A), textured("b", PNG_A), textured("c", PNG_B)]
+    )
+    a, b, c = (root / name / "tex.png" for name in "abc")
+    assert a.read_bytes() == PNG_A and c.read_bytes() == PNG_B
+    assert a.stat().st_ino == b.stat().st_ino != c.stat().st_ino
+    blobs = sorted((root / library_writer.BLOB_DIR).iterdir())
+    assert len(blobs) == 2 and {p.stat().st_nlink for p in blobs} == {2, 3}
+    # The linked files read like any other: the library opens and finds the texture.
+    assert AssetLibrary.open(root).get("a").path("tex.png").read_bytes() == PNG_A
+
+
+def test_added_assets_link_existing_blobs_and_unused_blobs_are_swept(tmp_path: Path) -> None:
+    root = write_library(tmp_path / "lib", "t", [textured("a", PNG_A)])
+    add_assets(root, [textured("b", PNG_A), textured("c", PNG_B)])
+    assert (root / "a" / "tex.png").stat().st_ino == (root / "b" / "tex.png").stat().st_ino
+    store = root / library_writer.BLOB_DIR
+    assert len(list(store.iterdir())) == 2
+    remove_assets(root, ["c"])  # the only user of PNG_B: its blob goes
+    assert [p.read_bytes() for p in store.iterdir()] == [PNG_A]
+    remove_assets(root, ["a"])  # b still links PNG_A
+    assert (root / "b" / "tex.png").read_bytes() == PNG_A and len(list(store.iterdir())) == 1
+    add_assets(root, [textured("b", PNG_B)])  # replacing b's texture frees PNG_A
+    assert [p.read_bytes() for p in store.iterdir()] == [PNG_B]
+
+
+def test_images_are_copied_where_links_fail(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    def no_links(source: object, target: object) -> None:
+        raise OSError(library_writer.errno.EXDEV, "cross-device link")
+
+    monkeypatch.setattr(library_writer.os, "link", no_links)
+    root = write_library(tmp_path / "lib", "t", [textured("a", PNG_A), textured("b", PNG_A)])
+    a, b = root / "a" / "tex.png", root / "b" / "tex.png"
+    assert a.read_bytes() == b.read_bytes() == PNG_A
+    assert a.stat().st_ino != b.stat().st_ino

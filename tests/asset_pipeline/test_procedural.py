@@ -17,6 +17,8 @@ import mujoco
 import numpy as np
 import pytest
 import trimesh
+from scipy.spatial import ConvexHull as scipy_hull
+from shapely.geometry import Point, Polygon
 
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.procedural import (
@@ -117,7 +119,13 @@ def test_build_is_deterministic_and_valid(tmp_path: Path) -> None:
     second = _files(build_default_library(tmp_path / "b"))
     first = _files(first_root)
     assert first == second
-    assert sum(len(v) for v in first.values()) < 16 * 1024 * 1024
+    # Size on disk: the shared texture images are hard links to one blob each, counted once.
+    stats = [p.stat() for p in first_root.rglob("*") if p.is_file()]
+    inodes = {(st.st_dev, st.st_ino): st.st_size for st in stats}
+    assert sum(inodes.values()) < 16 * 1024 * 1024
+    textures = list(first_root.glob("*/texture_*.png"))
+    assert textures and all(p.stat().st_nlink > 1 for p in textures)
+    assert len({p.stat().st_ino for p in textures}) == len(list((first_root / ".blobs").iterdir()))
     index = first["library.json"].decode()
     assert DEFAULT_LIBRARY_NAME in index and DEFAULT_LIBRARY_VERSION in DEFAULT_LIBRARY_NAME
     assert re.fullmatch(r"[0-9a-f]{12}", DEFAULT_LIBRARY_VERSION)
@@ -255,8 +263,12 @@ def _depth_inside(planes: tuple[np.ndarray, np.ndarray], points: np.ndarray) -> 
 
 
 def _collider_samples(collider: Collider) -> np.ndarray:
-    """Points on the collider's boundary: corners, edge and face centres, rims."""
+    """Points on the collider's boundary: corners, edge and face centres, rims (a hull: its
+    vertices and the points halfway to its centre)."""
     pos = np.asarray(collider.pos)
+    if collider.kind == "mesh":
+        vertices = np.asarray(collider.vertices)
+        return pos + np.concatenate([vertices, 0.5 * (vertices + vertices.mean(axis=0))])
     if collider.kind == "box":
         grid = np.stack(np.meshgrid([-1, 0, 1], [-1, 0, 1], [-1, 0, 1]), -1).reshape(-1, 3)
         return pos + grid * np.asarray(collider.size)
@@ -301,8 +313,20 @@ def _rotate(quat, vec: np.ndarray) -> np.ndarray:
     return out
 
 
-def _collider_aabb(part) -> tuple[np.ndarray, np.ndarray]:
+def _hull_points(b: AssetBundle, part) -> np.ndarray:
+    """A mesh collider's vertices in the asset frame, as its file stores them."""
+    text = b.files[part.mesh].decode()
+    local = np.array(
+        [[float(v) for v in ln.split()[1:4]] for ln in text.splitlines() if ln[:2] == "v "]
+    )
+    return np.asarray(part.pos) + np.array([_rotate(part.quat, v) for v in local])
+
+
+def _collider_aabb(b: AssetBundle, part) -> tuple[np.ndarray, np.ndarray]:
     pos = np.asarray(part.pos)
+    if part.kind == "mesh":
+        points = _hull_points(b, part)
+        return points.min(axis=0), points.max(axis=0)
     if part.kind == "box":
         half = np.asarray(part.size)
     elif part.kind == "sphere":
@@ -314,9 +338,18 @@ def _collider_aabb(part) -> tuple[np.ndarray, np.ndarray]:
     return pos - half, pos + half
 
 
-def _top_and_contains(part, x: float, y: float) -> tuple[float, bool]:
-    """The collider's top z and whether it covers (x, y) in plan (upright colliders only)."""
+def _top_and_contains(b: AssetBundle, part, x: float, y: float) -> tuple[float, bool]:
+    """The collider's top z and whether it covers (x, y) in plan (upright colliders only; a
+    hull: its flat top face)."""
     px, py, pz = part.pos
+    if part.kind == "mesh":
+        points = _hull_points(b, part)
+        top = points[:, 2].max()
+        face = points[points[:, 2] >= top - 1e-6, :2]
+        if len(face) < 3:
+            return top, False
+        hull = Polygon(face[scipy_hull(face).vertices])
+        return top, bool(hull.buffer(1e-6).contains(Point(x, y)))
     if part.kind == "box" and tuple(part.quat) == (1.0, 0.0, 0.0, 0.0):
         hx, hy, hz = part.size
         return pz + hz, abs(x - px) <= hx + 1e-6 and abs(y - py) <= hy + 1e-6
@@ -344,7 +377,7 @@ def test_geometry_and_metadata(case: str) -> None:
     assert abs(low[2]) <= 1e-6, "mesh bottom is not at z = 0"
     np.testing.assert_allclose(0.5 * (low[:2] + high[:2]), [0.0, 0.0], atol=1e-5)
     for part in meta.collision:
-        c_low, c_high = _collider_aabb(part)
+        c_low, c_high = _collider_aabb(b, part)
         assert np.all(c_low >= low - MM) and np.all(c_high <= high + MM), part
     for surface in meta.surfaces:
         assert 0.0 < surface.height <= meta.size[2] + MM
@@ -353,7 +386,7 @@ def test_geometry_and_metadata(case: str) -> None:
             assert abs(x) <= 0.5 * meta.size[0] + MM and abs(y) <= 0.5 * meta.size[1] + MM
             supported = any(
                 inside and abs(top - surface.height) <= MM
-                for top, inside in (_top_and_contains(p, x, y) for p in meta.collision)
+                for top, inside in (_top_and_contains(b, p, x, y) for p in meta.collision)
             )
             assert supported, f"surface point {(x, y)} at {surface.height} has no collider top"
 
@@ -403,11 +436,18 @@ def _build_model(b: AssetBundle) -> mujoco.MjModel:
         "box": mujoco.mjtGeom.mjGEOM_BOX,
         "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER,
         "sphere": mujoco.mjtGeom.mjGEOM_SPHERE,
+        "mesh": mujoco.mjtGeom.mjGEOM_MESH,
     }
-    for part in meta.collision:
+    for k, part in enumerate(meta.collision):
+        mesh = ""
+        if part.kind == "mesh":
+            spec.assets = {**spec.assets, part.mesh: b.files[part.mesh]}
+            mesh = f"hull_{k}"
+            spec.add_mesh(name=mesh, file=part.mesh, maxhullvert=meta.maxhullvert)
         body.add_geom(
             type=kinds[part.kind],
-            size=[*part.size, 0.0, 0.0][:3],
+            meshname=mesh,
+            size=[*part.size, 0.0, 0.0, 0.0][:3],
             pos=list(part.pos),
             quat=list(part.quat),
             density=meta.density_kg_m3,

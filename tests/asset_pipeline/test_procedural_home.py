@@ -75,9 +75,10 @@ def _knowledge() -> dict[str, dict]:
 
 
 def _box(part) -> tuple[np.ndarray, np.ndarray]:
-    """Axis-aligned bounds of a collision part (boxes and cylinders along x, y or z)."""
+    """Axis-aligned bounds of a collision part (boxes, hulls -- their size is their bounding
+    box's half extents -- and cylinders along x, y or z)."""
     pos, size = np.asarray(part.pos), part.size
-    if part.kind == "box":
+    if part.kind in ("box", "mesh"):
         half = np.asarray(size)
     elif part.kind == "sphere":
         half = np.full(3, size[0])
@@ -193,7 +194,8 @@ def test_curtains_are_thin_pleated_panels_on_a_rod() -> None:
         cylinders = [c for c in m.collision if c.kind == "cylinder"]
         assert len(cylinders) == 1 and cylinders[0].pos[2] > h - 0.03, "no rod at the top"
         panels = [c for c in m.collision if c.kind == "box" and 2 * c.size[2] > 0.8 * h]
-        assert panels and all(2 * c.size[0] <= 0.03 for c in panels), "panels are not thin"
+        # The pleats' own colliders cover them (the collider audit): a few centimetres deep.
+        assert panels and all(2 * c.size[0] <= 0.04 for c in panels), "panels are not thin"
         assert all(abs(c.pos[2] - c.size[2]) < MM for c in panels), "panels do not reach the floor"
 
 

@@ -127,8 +127,9 @@ def test_tall_pieces_have_a_low_enough_centre_of_mass(name: str) -> None:
 
 
 def _half(c) -> tuple[float, float, float]:
-    """Half extents of a collider's bounding box (cylinders along z, x or y)."""
-    if c.kind == "box":
+    """Half extents of a collider's bounding box (cylinders along z, x or y; a hull's size is
+    its bounding box's half extents)."""
+    if c.kind in ("box", "mesh"):
         return c.size[0], c.size[1], c.size[2]
     if c.kind == "sphere":
         return (c.size[0],) * 3

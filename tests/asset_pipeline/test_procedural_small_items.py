@@ -143,6 +143,9 @@ def _base_and_com(name: str, size, seed: int) -> tuple[float, float, float]:
             half = c.size[1]
             along = (half, 0.0) if c.axis == "x" else (0.0, half)
             points += [(x - along[0], y - along[1]), (x + along[0], y + along[1])]
+        elif c.kind == "mesh":  # a hull stands on its lowest vertices
+            hull = np.asarray(c.vertices) + np.asarray(c.pos)
+            points += [(px, py) for px, py, pz in hull if pz <= floor + 1e-3]
         else:
             points.append((x, y))
     hull = ConvexHull(np.array(points))
@@ -160,8 +163,10 @@ def test_base_is_wide_enough_to_stand(name: str) -> None:
 
 
 def _drop_model(name: str, size, seed: int, lift: float) -> mujoco.MjModel:
-    meta = generate_asset(name, "d", size, seed).meta
+    bundle = generate_asset(name, "d", size, seed)
+    meta = bundle.meta
     spec = mujoco.MjSpec()
+    spec.assets = {p.mesh: bundle.files[p.mesh] for p in meta.collision if p.kind == "mesh"}
     spec.option.timestep = 0.002
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
@@ -172,11 +177,15 @@ def _drop_model(name: str, size, seed: int, lift: float) -> mujoco.MjModel:
         "box": mujoco.mjtGeom.mjGEOM_BOX,
         "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER,
         "sphere": mujoco.mjtGeom.mjGEOM_SPHERE,
+        "mesh": mujoco.mjtGeom.mjGEOM_MESH,
     }
-    for part in meta.collision:
+    for k, part in enumerate(meta.collision):
+        if part.kind == "mesh":  # a convex hull: its file, capped as the library caps it
+            spec.add_mesh(name=f"hull_{k}", file=part.mesh, maxhullvert=meta.maxhullvert)
         body.add_geom(
             type=kinds[part.kind],
-            size=[*part.size, 0.0, 0.0][:3],
+            meshname=f"hull_{k}" if part.kind == "mesh" else "",
+            size=[*part.size, 0.0, 0.0, 0.0][:3],
             pos=list(part.pos),
             quat=list(part.quat),
             density=meta.density_kg_m3,

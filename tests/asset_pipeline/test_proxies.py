@@ -10,9 +10,11 @@ from asset_pipeline.procedural.attributes import COLOURS, Attributes
 from asset_pipeline.procedural.proxies import FAMILIES, build_proxy, mass_bounds, proxy_family
 
 
-def _stands_still(meta, seconds: float = 1.0) -> tuple[float, float]:
+def _stands_still(bundle, seconds: float = 1.0) -> tuple[float, float]:
     """Drift (m) and tilt (rad) of the asset's colliders on a floor plane after ``seconds``."""
+    meta = bundle.meta
     spec = mujoco.MjSpec()
+    spec.assets = {p.mesh: bundle.files[p.mesh] for p in meta.collision if p.kind == "mesh"}
     spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[5, 5, 0.1])
     body = spec.worldbody.add_body(name="proxy", pos=[0, 0, 0.0005])
     body.add_freejoint()
@@ -21,11 +23,20 @@ def _stands_still(meta, seconds: float = 1.0) -> tuple[float, float]:
         "box": mujoco.mjtGeom.mjGEOM_BOX,
         "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER,
         "sphere": mujoco.mjtGeom.mjGEOM_SPHERE,
+        "mesh": mujoco.mjtGeom.mjGEOM_MESH,
     }
-    for part in meta.collision:
+    for k, part in enumerate(meta.collision):
         size = list(part.size) + [0.0] * (3 - len(part.size))
+        mesh = f"hull_{k}" if part.kind == "mesh" else ""
+        if mesh:  # a convex hull collider (a big sphere's or disc's)
+            spec.add_mesh(name=mesh, file=part.mesh, maxhullvert=meta.maxhullvert)
         body.add_geom(
-            type=kinds[part.kind], size=size, pos=part.pos, quat=part.quat, density=density
+            type=kinds[part.kind],
+            size=size,
+            pos=part.pos,
+            quat=part.quat,
+            density=density,
+            meshname=mesh,
         )
     model = spec.compile()
     data = mujoco.MjData(model)
@@ -45,7 +56,7 @@ def test_treadmill_proxy() -> None:
     assert meta.description == f"a proxy for a treadmill ({family.replace('_', ' ')})"
     low, high = mass_bounds("floor")
     assert low <= meta.mass <= high
-    drift, tilt = _stands_still(meta)
+    drift, tilt = _stands_still(bundle)
     assert drift < 0.005 and tilt < np.radians(1.0)
 
 
@@ -60,7 +71,7 @@ def test_every_family_is_valid_and_stands_still(family: str) -> None:
     # colliders inside the visual bounds (assemble checks), a plausible mass
     assert 0.0 < meta.mass <= mass_bounds("floor")[1]
     if family != "frame":  # a frame hangs on a wall
-        drift, tilt = _stands_still(meta)
+        drift, tilt = _stands_still(bundle)
         assert drift < 0.005 and tilt < np.radians(1.0), (family, drift, tilt)
 
 

@@ -17,7 +17,7 @@ def _bundle(library: AssetLibrary, asset_id: str) -> AssetBundle:
     files = {
         p.relative_to(asset.root).as_posix(): p.read_bytes()
         for p in asset.root.rglob("*")
-        if p.is_file() and p.name != "asset.json" and not p.name.endswith(".png")
+        if p.is_file() and p.name != "asset.json" and p.parent.name != "thumbnails"
     }
     return AssetBundle(meta=asset.meta.model_copy(update={"thumbnails": []}), files=files)
 

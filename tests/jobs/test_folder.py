@@ -18,6 +18,7 @@ from holomj.jobs import folder as writer
 from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
+from holomj.mjcf.textures import pattern_png
 from holomj.spec.base import read_json
 from holomj.spec.scene import SceneSpec
 
@@ -165,5 +166,11 @@ def test_textures_are_copied_and_scene_json_points_at_them(
     scene = json.loads((out / "scene.json").read_text())
     assert scene["materials"]["marble_tex"]["texture"] == "assets/textures/marble_tex.png"
     assert (out / "assets/textures/marble_tex.png").read_bytes() == texture.read_bytes()
+    # The living room's built-in oak floor wears the procedural planks: written beside it, and
+    # scene.json keeps naming the built-in material (the compile draws the pattern again).
+    assert (out / "assets/textures/oak_floor.png").read_bytes() == pattern_png("planks")
+    assert "oak_floor" not in scene.get("materials", {}) or not scene["materials"]["oak_floor"].get(
+        "texture"
+    )
     os.chdir(tmp_path)
-    assert mujoco.MjModel.from_xml_path("out/scene.xml").ntex == 1
+    assert mujoco.MjModel.from_xml_path("out/scene.xml").ntex == 2

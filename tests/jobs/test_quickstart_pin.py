@@ -21,7 +21,9 @@ QUICKSTART_SEED = 7
 # - issue 14/15: 223 procedural categories, asset texts with the knowledge base's synonyms,
 #   attribute-matched or synthesised assets (white, round, wooden), a 1 m door keep-out and
 #   furniture nudged to open unreachable floor (measured as the navigation map sees it).
-SCENE_XML_SHA256 = "0671813a91d57230c831b11066c519b742702b7f2b62f99d61f6ba3398309124"
+# - procedural textures with UVs, hull colliders that cover the visuals (collider audit), per-part
+#   roles, kitchens as counter runs and the planner's seating/area rules.
+SCENE_XML_SHA256 = "3705725d3bb77ac4eb49891d59f4b9d723040d52a046e4abf584915ba0ed93d7"
 
 
 @pytest.mark.slow

@@ -15,7 +15,9 @@ from shapely.geometry import Point, Polygon
 from holomj.errors import AssetNotFoundError
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
+from holomj.mjcf.textures import PATTERNS, pattern_mean, pattern_png
 from holomj.physics.smoke import simulate
+from holomj.spec.materials import BUILTIN_MATERIALS
 from holomj.spec.scene import SceneSpec
 from tests.conftest import TESTS, two_room_data
 
@@ -208,9 +210,58 @@ def test_texture_material(tmp_path: Path, empty_library: AssetLibrary, shared_as
     data["materials"] = {"planks": {"texture": str(texture), "texture_size_m": 1.5}}
     data["rooms"][1]["floor_material"] = "planks"
     compiled = compile_scene(SceneSpec.model_validate(data), empty_library)
-    assert compiled.model.ntex == 1
+    # The user's texture, and the procedural tiles of the other room's grey_tile floor.
+    assert compiled.model.ntex == 2
     assert compiled.files["textures/planks.png"] == texture.read_bytes()
+    assert compiled.files["textures/grey_tile.png"] == pattern_png("tile")
+    # The slab's coordinates count tiles of 1.5 m: used as they are, not garbled by texuniform.
+    floor = compiled.model.material("material/planks/uv")
+    assert tuple(floor.texrepeat) == (1.0, 1.0) and not floor.texuniform
     assert simulate(compiled.model, 0.2).ok
+
+
+def test_room_materials_wear_procedural_textures(empty_library: AssetLibrary) -> None:
+    """A built-in wood, tile, brick or carpet room material gets its pattern at the pattern's
+    physical tile size, tinted to keep its colour; paints stay plain."""
+    data = two_room_data()
+    data["rooms"][0]["floor_material"] = "carpet_grey"
+    data["rooms"][1]["floor_material"] = "oak_floor"
+    data["rooms"][1]["wall_material"] = "brick"
+    compiled = compile_scene(SceneSpec.model_validate(data), empty_library)
+    model = compiled.model
+    assert compiled.files["textures/carpet_grey.png"] == pattern_png("carpet")
+    assert compiled.files["textures/oak_floor.png"] == pattern_png("planks")
+    assert compiled.files["textures/brick.png"] == pattern_png("brick")
+    assert model.ntex == 3
+    # Average colour kept: tint x mean luminance == the built-in colour.
+    oak = model.material("material/oak_floor/uv")
+    expected = BUILTIN_MATERIALS["oak_floor"].rgba
+    np.testing.assert_allclose(
+        np.asarray(oak.rgba[:3]) * pattern_mean("planks"), expected[:3], atol=2e-3
+    )
+    assert model.material("material/wall_default").texid[mujoco.mjtTextureRole.mjTEXROLE_RGB] == -1
+    # The floor slab's texture coordinates count tiles (7 x 5 m of living room), used as they are.
+    assert tuple(oak.texrepeat) == (1.0, 1.0) and not oak.texuniform
+    slab = model.mesh("structure/floor/living").id
+    start, count = model.mesh_texcoordadr[slab], model.mesh_texcoordnum[slab]
+    uv = model.mesh_texcoord[start : start + count]
+    span = uv.max(axis=0) - uv.min(axis=0)
+    np.testing.assert_allclose(span, np.array([7.0, 5.0]) / PATTERNS["planks"].tile_m, atol=1e-4)
+    # Every brick wall piece repeats the bricks once per tile along its length and height.
+    tile = PATTERNS["brick"].tile_m
+    pieces = [
+        i
+        for i in range(model.ngeom)
+        if model.geom(i).name.startswith("structure/wall_")
+        and model.material(model.geom_matid[i]).name.startswith("material/brick/")
+    ]
+    assert pieces
+    for i in pieces:
+        material = model.material(model.geom_matid[i])
+        length, _, height = 2.0 * model.geom_size[i]
+        np.testing.assert_allclose(material.texrepeat, [length / tile, height / tile], atol=1e-3)
+        assert not material.texuniform
+    assert simulate(model, 0.2).ok
 
 
 def test_light_fixtures_carry_their_rooms_light(default_library: AssetLibrary) -> None:

@@ -69,11 +69,11 @@ from holomj.layout.constraints import GLOBAL_KINDS, Constraint, normalize_name
 from holomj.layout.place_relations import opening_gap
 from holomj.layout.room_problem import LayoutObject, PreparedRoom, RoomProblem
 from holomj.layout.solve import (
-    ConstraintReport,
     HardChecks,
     LayoutResult,
     Placement,
     UnplacedObject,
+    constraint_reports,
     hard_checks,
 )
 from holomj.layout.window_moves import raise_sill
@@ -889,18 +889,9 @@ def _attempt(
                 needed[k] = window
                 break
     real = _real_problem(_with_windows(problem, needed), arr)
-    checks = _check(real, placements, run)
+    checks = check_split(real, placements, run)
     if not checks.ok:
-        problems = [
-            *checks.overlaps,
-            *checks.clearance,
-            *(f"{i} outside the room" for i in checks.outside_room),
-            *checks.door_zones,
-            *checks.windows,
-            *(f"{i} faces a wall" for i in checks.facing_wall),
-        ]
-        if checks.walkable is False:
-            problems.append("the run blocks the way between the doors")
+        problems = checks.problems("the run blocks the way between the doors")
         return None, "the split run breaks a hard rule: " + "; ".join(problems[:3])
     if needed:
         fields["raised_windows"] = [
@@ -922,7 +913,7 @@ def _attempt(
                 if r.object == island and r.kind == "in_front_of" and r.target in legs
             ),
         }
-    return _result(real, solved, placements, checks, legs), fields
+    return split_result(real, solved, placements, checks, legs), fields
 
 
 def _corners(p: Placement) -> list[tuple[float, float]]:
@@ -1190,7 +1181,9 @@ def _face_each_other(a: Sequence[Placement], b: Sequence[Placement]) -> bool:
 # --------------------------------------------------------------------------- checking
 
 
-def _check(problem: RoomProblem, placements: dict[str, Placement], run: set[str]) -> HardChecks:
+def check_split(
+    problem: RoomProblem, placements: dict[str, Placement], run: set[str]
+) -> HardChecks:
     """The hard rules on the finished layout: the solver's post-check with the modules' own
     footprints and heights, the modules of the run allowed to touch each other (every other
     pair keeps the clearance)."""
@@ -1214,7 +1207,7 @@ def _check(problem: RoomProblem, placements: dict[str, Placement], run: set[str]
     return checks
 
 
-def _result(
+def split_result(
     problem: RoomProblem,
     solved: LayoutResult,
     placements: dict[str, Placement],
@@ -1225,21 +1218,7 @@ def _result(
     prep = PreparedRoom(problem)
     ordered = {o.id: placements[o.id] for o in problem.objects if o.id in placements}
     metres = {prep.index[i]: (p.x, p.y, geo.yaw_index(p.yaw_deg)) for i, p in ordered.items()}
-    reports = []
-    for c in prep.constraints:
-        ok, detail = prep.evaluate(c, metres)
-        reports.append(
-            ConstraintReport(
-                text=c.text,
-                object=c.object,
-                kind=c.kind,
-                target=c.target,
-                weight=c.weight,
-                satisfied=ok,
-                detail=detail,
-                source=c.source,
-            )
-        )
+    reports = constraint_reports(prep, metres)
     unplaced = [
         UnplacedObject(id=u.id, reason=u.reason) for u in solved.unplaced if u.id not in legs
     ]

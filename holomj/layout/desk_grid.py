@@ -50,7 +50,7 @@ from shapely.geometry import LineString, Point
 
 from holomj.layout import geometry as geo
 from holomj.layout.constraints import Constraint, normalize_name
-from holomj.layout.counter_runs import _check, _result
+from holomj.layout.counter_runs import check_split, split_result
 from holomj.layout.open_pockets import ReachMeter
 from holomj.layout.room_problem import (
     MAX_OBJECT_SIZE_M,
@@ -927,18 +927,9 @@ def _attempt(
             }
         )
     members = group.members & set(placements)
-    checks = _check(problem, placements, members)
+    checks = check_split(problem, placements, members)
     if not checks.ok:
-        problems = [
-            *checks.overlaps,
-            *checks.clearance,
-            *(f"{i} outside the room" for i in checks.outside_room),
-            *checks.door_zones,
-            *checks.windows,
-            *(f"{i} faces a wall" for i in checks.facing_wall),
-        ]
-        if checks.walkable is False:
-            problems.append("the grid blocks the way between the doors")
+        problems = checks.problems("the grid blocks the way between the doors")
         return None, "the split grid breaks a hard rule: " + "; ".join(problems[:3])
     cut = _cut_off(ctx.prep, placements, [solved.placements[b] for b in ids])
     if cut > 0:
@@ -947,7 +938,7 @@ def _attempt(
         u.id for u in solved.unplaced if u.id in by_id and by_id[u.id].priority >= ctx.keep_priority
     )
     fields: dict[str, Any] = {"blocks": blocks_out, "looker": looker, "left_out": left_out}
-    return _result(problem, solved, placements, checks, ids), fields
+    return split_result(problem, solved, placements, checks, ids), fields
 
 
 def _cut_off(

@@ -92,6 +92,21 @@ class HardChecks(BaseModel):
             or self.walkable is False
         )
 
+    def problems(self, blocking: str) -> list[str]:
+        """The broken rules in words, in rule order; ``blocking`` is said when the way between
+        the doors is blocked ("the run blocks the way between the doors")."""
+        out = [
+            *self.overlaps,
+            *self.clearance,
+            *(f"{i} outside the room" for i in self.outside_room),
+            *self.door_zones,
+            *self.windows,
+            *(f"{i} faces a wall" for i in self.facing_wall),
+        ]
+        if self.walkable is False:
+            out.append(blocking)
+        return out
+
 
 class LayoutResult(BaseModel):
     """The answer for one room."""
@@ -174,6 +189,28 @@ def solve_room(
     poses = snap_to_walls(prep, poses)
     poses = open_pockets(prep, poses)
     return _report(prep, poses, reasons, start, used, status, warnings)
+
+
+def constraint_reports(
+    prep: PreparedRoom, metres: dict[int, tuple[float, float, int]]
+) -> list[ConstraintReport]:
+    """Every constraint of the room judged on poses in metres ``{index: (x, y, yaw index)}``."""
+    reports = []
+    for c in prep.constraints:
+        ok, detail = prep.evaluate(c, metres)
+        reports.append(
+            ConstraintReport(
+                text=c.text,
+                object=c.object,
+                kind=c.kind,
+                target=c.target,
+                weight=c.weight,
+                satisfied=ok,
+                detail=detail,
+                source=c.source,
+            )
+        )
+    return reports
 
 
 def _placed_priority(prep: PreparedRoom, poses: dict[int, Pose]) -> int:
@@ -367,21 +404,7 @@ def _report(
         )
         for i, (x, y, k) in sorted(metres.items())
     }
-    reports = []
-    for c in prep.constraints:
-        ok, detail = prep.evaluate(c, metres)
-        reports.append(
-            ConstraintReport(
-                text=c.text,
-                object=c.object,
-                kind=c.kind,
-                target=c.target,
-                weight=c.weight,
-                satisfied=ok,
-                detail=detail,
-                source=c.source,
-            )
-        )
+    reports = constraint_reports(prep, metres)
     unplaced = [
         UnplacedObject(
             id=item.id, reason=reasons.get(item.index, "not placed (no reason recorded)")

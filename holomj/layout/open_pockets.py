@@ -57,18 +57,24 @@ class ReachMeter:
 
     def pockets(self, rects: Sequence[Sequence[float]]) -> tuple[float, np.ndarray]:
         """The reachable share and the mask of free cells not reachable from a door."""
+        share, pocket, _ = self.split(rects)
+        return share, pocket
+
+    def split(self, rects: Sequence[Sequence[float]]) -> tuple[float, np.ndarray, np.ndarray]:
+        """The reachable share, the mask of free cells not reachable from a door and the mask
+        of those reachable."""
         free = geo.clear_of(self.base_free, self.xs, self.ys, rects, FREE_RADIUS_M)
         passable = geo.clear_of(self.base_pass, self.xs, self.ys, rects, PASSAGE_RADIUS_M)
         total = int(free.sum())
         if total == 0 or not self.applicable:
-            return 1.0, np.zeros_like(free)
+            return 1.0, np.zeros_like(free), free
         labels, _ = ndimage.label(passable)
         reached = set(np.unique(labels[passable & self.seeds]).tolist()) - {0}
         core = np.isin(labels, list(reached)) & passable
         # what the larger robot reaches, grown by the difference of the radii: the floor the
         # smaller one covers from there
         reach = ndimage.binary_dilation(core, self.sweep, iterations=self.sweep_steps) & free
-        return float(reach.sum()) / total, free & ~reach
+        return float(reach.sum()) / total, free & ~reach, reach
 
 
 def reachable_share(prep: PreparedRoom, poses: dict[int, Pose]) -> float:
@@ -85,7 +91,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     if not meter.applicable or not poses:
         return poses
     g = prep.grid
-    share, pocket = meter.pockets(prep.footprints(poses))
+    share, pocket, reached = meter.split(prep.footprints(poses))
     if share >= TARGET_SHARE:
         return poses
     poses = dict(poses)
@@ -94,7 +100,9 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     trials = 0
     for _ in range(MAX_ROUNDS):
         best: tuple[tuple[bool, float, float], dict[int, Pose]] | None = None
-        for i in _bordering(prep, poses, pocket, meter):
+        # a door cut off is reopened by what stands between the floor reached and the rest
+        frontier = reached if share < CUT_OFF_SHARE else None
+        for i in _bordering(prep, poses, pocket, meter, frontier):
             x, y, k = poses[i]
             for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)):
                 for n in range(1, steps + 1):
@@ -123,27 +131,37 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
             break
         _, poses = best
         weight = satisfied_weight(prep, prep.metres(poses))
-        share, pocket = meter.pockets(prep.footprints(poses))
+        share, pocket, reached = meter.split(prep.footprints(poses))
         if share >= TARGET_SHARE:
             break
     return poses
 
 
 def _bordering(
-    prep: PreparedRoom, poses: dict[int, Pose], pocket: np.ndarray, meter: ReachMeter
+    prep: PreparedRoom,
+    poses: dict[int, Pose],
+    pocket: np.ndarray,
+    meter: ReachMeter,
+    frontier: np.ndarray | None = None,
 ) -> list[int]:
-    """Objects whose footprint comes within the robot's reach of a pocket, lowest priority
-    first."""
+    """Objects whose footprint comes within the robot's reach of a pocket (and, given a
+    ``frontier`` mask, of it too: the floor reached from a door), lowest priority first."""
     if not pocket.any():
         return []
-    px, py = meter.xs[pocket], meter.ys[pocket]
-    reach = PASSAGE_RADIUS_M + 2 * CELL_M
+    masks = [pocket] if frontier is None or not frontier.any() else [pocket, frontier]
     out = []
     g = prep.grid
     for i, (x, y, k) in poses.items():
-        xmin, ymin, xmax, ymax = prep.footprint(i, x * g, y * g, k)
-        dx = np.maximum(np.maximum(xmin - px, px - xmax), 0.0)
-        dy = np.maximum(np.maximum(ymin - py, py - ymax), 0.0)
-        if (dx * dx + dy * dy <= reach * reach).any():
+        box = prep.footprint(i, x * g, y * g, k)
+        if all(_within_reach(box, meter.xs[m], meter.ys[m]) for m in masks):
             out.append(i)
     return sorted(out, key=lambda i: (prep.items[i].priority, i))
+
+
+def _within_reach(box: Sequence[float], px: np.ndarray, py: np.ndarray) -> bool:
+    """Whether any of the points comes within the robot's reach of the box."""
+    xmin, ymin, xmax, ymax = box
+    reach = PASSAGE_RADIUS_M + 2 * CELL_M
+    dx = np.maximum(np.maximum(xmin - px, px - xmax), 0.0)
+    dy = np.maximum(np.maximum(ymin - py, py - ymax), 0.0)
+    return bool((dx * dx + dy * dy <= reach * reach).any())

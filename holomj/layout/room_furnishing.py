@@ -44,7 +44,7 @@ from holomj.layout.room_problem import (
     LayoutWindow,
     RoomProblem,
 )
-from holomj.layout.rugs import Anchor, lay_rug
+from holomj.layout.rugs import Anchor, lay_rugs
 from holomj.layout.solve import LayoutResult, Placement, solve_room
 from holomj.layout.wall_objects import (
     ABOVE_GAP_M,
@@ -681,9 +681,8 @@ def _lay_rugs(
     ]
     inset = context.wall_thickness / 2 + LAYOUT_MARGIN_M
     polygon = Polygon(room.polygon).buffer(-inset, join_style="mitre")
-    for instance, asset_id in rugs:
-        depth, width, _ = library.get(asset_id).meta.size
-        pose = lay_rug(polygon, (depth, width), anchors)
+    sizes = [tuple(library.get(a).meta.size[:2]) for _, a in rugs]
+    for (instance, asset_id), pose in zip(rugs, lay_rugs(polygon, sizes, anchors), strict=True):
         if isinstance(pose, str):
             out.unplaced.append({"object": instance, "stage": "layout", "reason": pose})
             continue

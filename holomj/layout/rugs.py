@@ -7,8 +7,10 @@ visual by that much and the physics stays that of the floor).
 
 Where it goes (:func:`lay_rug`): centred under the room's main piece, the first present of
 :data:`ANCHOR_CATEGORIES` (a coffee table, a dining table, a bed, ...), its long side along the
-piece's long side; else in the middle of the room. It is shifted towards the room's centre, then
-scaled down (to at most :data:`MIN_SCALE`), until it lies inside the room with
+piece's long side; else in the middle of the room. Several rugs (:func:`lay_rugs`: "rubber mats
+on the floor") go one after the other, each clear of those before it: under the main piece,
+in the middle, then under the other pieces, biggest first. A rug is shifted towards the room's
+centre, then scaled down (to at most :data:`MIN_SCALE`), until it lies inside the room with
 :data:`WALL_MARGIN_M` to spare; otherwise it is not placed, with the reason.
 """
 
@@ -48,36 +50,79 @@ class RugPose:
     scale: float
 
 
-def lay_rug(room: Polygon, size: tuple[float, float], anchors: Sequence[Anchor]) -> RugPose | str:
+def lay_rug(
+    room: Polygon,
+    size: tuple[float, float],
+    anchors: Sequence[Anchor],
+    avoid: Sequence[Polygon] = (),
+) -> RugPose | str:
     """The pose of a rug of ``size`` (depth along its x, width along its y) in ``room``, or
-    why it does not fit."""
-    anchor = next(
-        (a for c in ANCHOR_CATEGORIES for a in anchors if a.category == c),
-        None,
+    why it does not fit.
+
+    Spots are tried in order: under the main piece (the first of :data:`ANCHOR_CATEGORIES`),
+    the room's middle, then under every other piece, biggest first; a rug must not lie on the
+    rugs of ``avoid`` (those laid before it)."""
+    main = [a for c in ANCHOR_CATEGORIES for a in anchors if a.category == c]
+    rest = sorted(
+        (a for a in anchors if a not in main), key=lambda a: a.width * a.depth, reverse=True
     )
+    inner = room.buffer(-WALL_MARGIN_M, join_style="mitre")
+    if inner.is_empty:
+        return "the room is too small for a rug"
+    for anchor in [*main[:1], None, *main[1:], *rest]:
+        pose = _fit(room, inner, size, anchor, avoid)
+        if pose is not None:
+            return pose
+    if avoid:
+        return f"no free floor for another {size[1]:.2f} x {size[0]:.2f} m rug"
+    return (
+        f"a {size[1]:.2f} x {size[0]:.2f} m rug does not fit in the room even at "
+        f"{MIN_SCALE:.0%} of its size"
+    )
+
+
+def lay_rugs(
+    room: Polygon, sizes: Sequence[tuple[float, float]], anchors: Sequence[Anchor]
+) -> list[RugPose | str]:
+    """Poses of several rugs, one after the other (:func:`lay_rug`), none on another."""
+    laid: list[Polygon] = []
+    out: list[RugPose | str] = []
+    for size in sizes:
+        pose = lay_rug(room, size, anchors, laid)
+        if isinstance(pose, RugPose):
+            laid.append(_footprint(pose.x, pose.y, pose.yaw_deg, size, pose.scale))
+        out.append(pose)
+    return out
+
+
+def _fit(
+    room: Polygon,
+    inner: Polygon,
+    size: tuple[float, float],
+    anchor: Anchor | None,
+    avoid: Sequence[Polygon],
+) -> RugPose | None:
+    """The rug under ``anchor`` (None: the room's middle), shifted towards the room's centre
+    and scaled down until it lies inside and clear of ``avoid``; None when it cannot."""
     centre = room.representative_point() if room.centroid.within(room) else room.centroid
     if anchor is None:
         x, y, yaw = room.centroid.x, room.centroid.y, _yaw_along_room(room)
     else:
         x, y = anchor.x, anchor.y
-        long_along_x = _long_axis_is_x(anchor)
         # the rug's width (its y) is its long side: along world x at yaw 90
-        yaw = 90.0 if long_along_x else 0.0
-    inner = room.buffer(-WALL_MARGIN_M, join_style="mitre")
-    if inner.is_empty:
-        return "the room is too small for a rug"
+        yaw = 90.0 if _long_axis_is_x(anchor) else 0.0
     scale = 1.0
     while scale >= MIN_SCALE - 1e-9:
         for step in range(_STEPS + 1):
             t = step / _STEPS
             cx, cy = x + (centre.x - x) * t, y + (centre.y - y) * t
-            if _footprint(cx, cy, yaw, size, scale).within(inner):
+            footprint = _footprint(cx, cy, yaw, size, scale)
+            if footprint.within(inner) and not any(
+                footprint.intersection(other).area > 1e-6 for other in avoid
+            ):
                 return RugPose(round(cx, 4), round(cy, 4), yaw, round(scale, 3))
         scale -= 0.1
-    return (
-        f"a {size[1]:.2f} x {size[0]:.2f} m rug does not fit in the room even at "
-        f"{MIN_SCALE:.0%} of its size"
-    )
+    return None
 
 
 def _long_axis_is_x(anchor: Anchor) -> bool:

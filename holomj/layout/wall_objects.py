@@ -26,9 +26,10 @@ other         centre at 1.5 m
 ============  ===================
 
 Nothing may overlap, in the wall plane, a door with its frame (up to the header, and the whole
-height for ``open`` doors), a window with its frame, another wall object (checked in 3D, so
-objects on two walls meeting at a corner are caught), or floor furniture near the wall that
-rises above the object's bottom.
+height for ``open`` doors; an object deeper than ``DEEP_M``, a wall cabinet, also keeps
+``DOOR_SIDE_M`` beside the frame, so that the way through the door stays wide), a window with
+its frame, another wall object (checked in 3D, so objects on two walls meeting at a corner are
+caught), or floor furniture near the wall that rises above the object's bottom.
 
 Curtains and blinds (kinds ``curtains`` and ``blinds``, ``DRESSING_KINDS``) are the exception:
 they hang at the room's windows, sized to them, and are placed before everything else (see
@@ -100,6 +101,8 @@ DEFAULT_WALL_HEIGHT = ("centre", 1.5)
 ABOVE_GAP_M = 0.1  # between a floor object's top and the wall object above it
 NEAR_WALL_M = 0.3  # furniture closer than object depth + this to the face counts as in front
 FREE_STEP_M = 0.05
+DEEP_M = 0.2  # a wall object deeper than this (a wall cabinet) narrows the floor below it
+DOOR_SIDE_M = 0.6  # kept free beside a door by a deep wall object
 
 
 class WallObjectRequest(FrozenModel):
@@ -152,6 +155,8 @@ def _blocks(
             z1 = opening.base_height + opening.height + OPENING_MARGIN_M
             what = f"window {opening.id}"
         half = width / 2 + OPENING_MARGIN_M
+        if isinstance(opening, Door) and depth > DEEP_M:
+            half += DOOR_SIDE_M  # a deep object beside a door narrows the way through it
         out.append((t - half, t + half, z0, z1, what))
     # Furniture standing near the face, projected onto it.
     near = face_band(face, depth + NEAR_WALL_M)

@@ -1,8 +1,10 @@
 """Room limits for an offline plan: dropping and shrinking objects until a room's furniture fits.
 
 :func:`fit_room` keeps at most ``max_floor_instances`` floor objects (raised to the number
-asked for, up to :data:`MAX_FLOOR_INSTANCES`), a floor footprint under
-``footprint_fraction`` of the room (rooms whose size was not given grow for requested objects;
+asked for, up to :data:`MAX_FLOOR_INSTANCES`), the floor the objects need in use
+(:mod:`holomj.plan.use_area`: a table with its chairs and aisles, a pool table with room for
+the cue) under ``footprint_fraction`` of the room (rooms whose size was not given grow for
+requested objects, up to ``max_grown_side`` a side;
 optional objects and extra requested instances go first, then objects take their smaller
 sizes, then extra essential instances go), no object too big for the room, at most
 ``max_wall_instances`` wall objects and ``max_receptacles`` receptacles with small objects.
@@ -15,6 +17,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from holomj.plan.draft import DraftObject, DraftPlan, DraftRoom, plural_name, remove_object
+from holomj.plan.use_area import floor_needs
 
 
 def fit_room(state: DraftPlan, room: DraftRoom) -> None:
@@ -29,6 +32,10 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
     def footprint() -> float:
         return sum(o.footprint * o.quantity for o in floor())
 
+    def in_use() -> float:  # the floor the objects need in use (holomj.plan.use_area)
+        needs = floor_needs(state.kb, room, limits.footprint_fraction)
+        return sum(needs[o.name] * o.quantity for o in floor())
+
     def phase(before: dict[str, tuple[int, bool, str]], why: str) -> None:
         for name, (count, _, _) in before.items():
             obj = room.get(name)
@@ -42,16 +49,17 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
             break
     phase(before, f"at most {cap} floor objects per room")
     budget = limits.footprint_fraction * room.floor_area
-    needed = sum(o.footprint * o.quantity for o in floor() if _tier(o, room) > 0)
+    needs = floor_needs(state.kb, room, limits.footprint_fraction)
+    needed = sum(needs[o.name] * o.quantity for o in floor() if _tier(o, room) > 0)
     if needed > budget and not room.fixed and any(o.requested for o in floor()):
-        area = min(limits.max_area, needed / limits.footprint_fraction)
+        area = min(limits.max_grown_area, needed / limits.footprint_fraction)
         state.note(
             f"enlarged {room.id} from {room.area:.1f} to {area:.1f} m² to fit the objects asked for"
         )
         room.area = round(area, 1)
         budget = limits.footprint_fraction * room.floor_area
     before = _counts(room)
-    while footprint() > budget:
+    while in_use() > budget:
         if not (
             _shrink(room, floor(), max_tier=1)
             or _downsize(state, room)
@@ -60,7 +68,8 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
             break
     phase(
         before,
-        f"furniture footprint under {limits.footprint_fraction:.0%} of {room.floor_area:.1f} m²",
+        f"furniture footprint in use under {limits.footprint_fraction:.0%} of "
+        f"{room.floor_area:.1f} m²",
     )
     before = _counts(room)
     hard_budget = limits.single_fraction * room.floor_area
@@ -71,11 +80,12 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
     before = _counts(room)
     _drop_misfits(state, room)
     phase(before, "too big for the room")
-    if footprint() > budget + 1e-6:
+    if in_use() > budget + 1e-6:
         names = ", ".join(o.name for o in floor())
         state.note(
             f"{room.id} keeps its {names} although they cover "
-            f"{footprint() / room.floor_area:.0%} of the floor"
+            f"{footprint() / room.floor_area:.0%} of the floor, with too little room "
+            "to use them"
         )
     before = _counts(room)
     while sum(o.quantity for o in room.objects if not o.floor) > limits.max_wall_instances:
@@ -92,7 +102,7 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
 
 
 ESSENTIAL = 9  # template priority from which an object is essential to its room
-MAX_FLOOR_INSTANCES = 40  # floor objects of one room, however many are asked for
+MAX_FLOOR_INSTANCES = 56  # floor objects of one room, however many are asked for
 
 
 def floor_cap(state: DraftPlan, room: DraftRoom) -> int:

@@ -307,6 +307,7 @@ class Limits(FrozenModel):
     max_small_per_receptacle: Annotated[int, Field(ge=1, le=20)] = 6
     min_side: Annotated[float, Field(ge=1.0, le=10.0)] = 2.5
     max_side: Annotated[float, Field(ge=2.0, le=40.0)] = 8.0
+    max_grown_side: Annotated[float, Field(ge=2.0, le=40.0)] = 12.0
     max_rooms: Annotated[int, Field(ge=1, le=30)] = 12
     size_words: dict[Phrase, Annotated[float, Field(gt=0.1, le=5.0)]] = Field(default_factory=dict)
     area_jitter: Annotated[float, Field(ge=0.0, le=0.5)] = 0.1
@@ -320,6 +321,11 @@ class Limits(FrozenModel):
     def max_area(self) -> float:
         """The largest room the floor planner accepts."""
         return self.max_side**2
+
+    @property
+    def max_grown_area(self) -> float:
+        """The largest a room of open size grows to hold the objects asked for in it."""
+        return max(self.max_side, self.max_grown_side) ** 2
 
 
 class ScenesFile(FrozenModel):

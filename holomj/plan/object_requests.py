@@ -236,6 +236,10 @@ def _add_object(
     request: ObjectRequest,
 ) -> None:
     if quantity > MAX_QUANTITY:
+        state.note(
+            f"asked for '{request.phrase or name}' in {room.id}; planned {MAX_QUANTITY} "
+            f"(at most {MAX_QUANTITY} of one kind per room)"
+        )
         quantity = MAX_QUANTITY
     obj = room.get(name)
     size = kind.size_for(request.size)

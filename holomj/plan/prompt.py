@@ -45,7 +45,7 @@ from holomj.plan.prompt_clauses import (
 from holomj.plan.prompt_index import PhraseIndex, phrase_index
 from holomj.plan.prompt_materials import lone_materials, read_materials
 from holomj.plan.prompt_parts import part_after
-from holomj.plan.prompt_reader import Mention, Reader, match_phrases, read_modifiers
+from holomj.plan.prompt_reader import Mention, Mods, Reader, match_phrases, read_modifiers
 from holomj.plan.prompt_relations import RelationRequest, read_relations
 from holomj.plan.prompt_sizes import read_sizes
 from holomj.plan.prompt_words import (
@@ -247,7 +247,9 @@ def _read_mentions(
             follows = reader.words[mention.end : mention.end + 2]
             each_room = follows[:1] == ["each"] and follows[1:] and follows[1] in WITH_START
             starts_list = follows[:1] and follows[0] in WITH_START | {"where"}
-            context = room.key if starts_list or each_room else None
+            context = (
+                room.key if starts_list or each_room or _one_of_them(reader, mention) else None
+            )
         elif thing is not None and _is_part_of_previous(reader, found, mention):
             continue  # "a chair with a red seat": the chair's seat (kept by _attach_parts)
         elif thing is not None:
@@ -255,7 +257,13 @@ def _read_mentions(
                 ObjectRequest(
                     kind=thing.key,
                     generic=thing.kind == "generic",
-                    quantity=_per_each(reader, mods.start, mention.end, mods.count, found.objects),
+                    quantity=_per_each(
+                        reader,
+                        mods.start,
+                        mention.end,
+                        _pair_count(reader, mention, mods),
+                        found.objects,
+                    ),
                     many=mods.many,
                     plural=thing.plural,
                     size=_size_class(mods.size_word, reader.index),
@@ -322,6 +330,24 @@ def _attach_parts(reader: Reader, found: _Found) -> None:
         found.objects[n] = obj.model_copy(update={"parts": [*obj.parts, reader.text(*part)]})
         for k in range(*part):
             reader.used[k] = True
+
+
+def _one_of_them(reader: Reader, room: Mention) -> bool:
+    """``two bedrooms, one with twin beds``: the list after the rooms is one room's."""
+    follows = [w for w in reader.words[room.end : room.end + 4] if w != ","]
+    return follows[:1] in (["one"], ["1"]) and follows[1:2] in (["with"], ["has"], ["having"])
+
+
+PAIR_WORDS = frozenset({"twin", "matching"})  # "twin beds", "matching armchairs": a pair
+
+
+def _pair_count(reader: Reader, mention: Mention, mods: Mods) -> int | None:
+    """The count a thing is asked in: as given, else two for ``twin beds``."""
+    if mods.counted:
+        return mods.count
+    words = reader.words[mods.start : mention.end]
+    plural = reader.words[mention.end - 1].endswith("s")
+    return 2 if plural and any(w in PAIR_WORDS for w in words) else mods.count
 
 
 def _per_each(

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from shapely.geometry import Polygon, box
 
-from holomj.layout.open_pockets import reachable_share
+from holomj.layout.open_pockets import open_pockets, reachable_share
 from holomj.layout.room_problem import PreparedRoom, problem_from_data
-from holomj.layout.rugs import Anchor, RugPose, lay_rug
-from holomj.layout.solve import solve_room
+from holomj.layout.rugs import Anchor, RugPose, _footprint, lay_rug, lay_rugs
+from holomj.layout.solve import hard_checks, solve_room
 
 
 def test_a_rug_goes_under_the_coffee_table_along_its_long_side() -> None:
@@ -27,6 +27,27 @@ def test_a_rug_that_does_not_fit_is_moved_then_shrunk_then_refused() -> None:
     assert footprint.area < room.area
     tiny = Polygon([(0, 0), (1, 0), (1, 1), (0, 1)])
     assert isinstance(lay_rug(tiny, (1.6, 2.3), []), str)
+
+
+def test_several_rugs_lie_side_by_side_never_on_each_other() -> None:
+    room = Polygon([(0, 0), (6, 0), (6, 4), (0, 4)])
+    pieces = [
+        Anchor(1.5, 2.0, 0.0, width=0.8, depth=1.8, category="treadmill"),
+        Anchor(4.5, 2.0, 0.0, width=1.2, depth=1.2, category="squat_rack"),
+    ]
+    size = (1.2, 1.8)
+    poses = lay_rugs(room, [size] * 3, pieces)
+    assert all(isinstance(p, RugPose) for p in poses)
+    shapes = [_footprint(p.x, p.y, p.yaw_deg, size, p.scale) for p in poses]
+    for a in range(3):
+        assert shapes[a].within(room)
+        for b in range(a):
+            assert shapes[a].intersection(shapes[b]).area < 1e-6
+    # one rug alone lies where it always did: in the middle when no main piece is present
+    single = lay_rug(room, size, pieces)
+    assert isinstance(single, RugPose) and (single.x, single.y) == (3.0, 2.0)
+    crowded = lay_rugs(Polygon([(0, 0), (2, 0), (2, 2), (0, 2)]), [size] * 2, [])
+    assert isinstance(crowded[0], RugPose) and isinstance(crowded[1], str)
 
 
 def test_layouts_leave_the_free_floor_reachable() -> None:
@@ -50,3 +71,34 @@ def test_layouts_leave_the_free_floor_reachable() -> None:
         for i, p in result.placements.items()
     }
     assert reachable_share(prep, poses) >= 0.97
+
+
+def test_a_door_fenced_in_by_furniture_is_reopened_by_what_fences_it() -> None:
+    # a row of cabinets just inside the door cuts off the room, where many stools stand: the
+    # stools border the pocket too, but only moving a cabinet reopens the door
+    crates = [
+        {"id": f"crate{i}", "width": 0.9, "depth": 0.6, "height": 0.9, "priority": 10}
+        for i in range(6)
+    ]
+    stools = [
+        {"id": f"stool{i}", "width": 0.3, "depth": 0.3, "height": 0.5, "priority": 1}
+        for i in range(20)
+    ]
+    data = {
+        "polygon": [[0, 0], [6, 0], [6, 5], [0, 5]],
+        "size_unit": "m",
+        "doors": [{"id": "d", "position": [3, 0], "width": 0.9}],
+        "objects": crates + stools,
+    }
+    problem = problem_from_data(data)
+    prep = PreparedRoom(problem)
+    g = prep.grid
+    poses = {k: (round((0.5 + k) / g), round(1.8 / g), 3) for k in range(6)}  # facing the door
+    for k in range(20):
+        poses[6 + k] = (round((1.0 + k % 5) / g), round((3.0 + 0.5 * (k // 5)) / g), 3)
+    checks, _ = hard_checks(prep, poses)
+    assert checks.ok
+    assert reachable_share(prep, poses) < 0.5
+    opened = open_pockets(prep, poses)
+    assert reachable_share(prep, opened) >= 0.9
+    assert any(opened[k] != poses[k] for k in range(6))

@@ -292,3 +292,26 @@ def test_faced_wall_object_hangs_on_the_line_of_sight() -> None:
     assert unplaced == []
     (p,) = placed
     assert p.x == pytest.approx(3.0, abs=0.05) and p.y > 3.8  # on the north wall, ahead of it
+
+
+def test_a_deep_wall_object_keeps_clear_beside_a_door_and_a_flat_one_need_not() -> None:
+    room = _rect("r", "kitchen", 0, 0, 4.0, 3.0)
+    walls = derive_walls([room])
+    door = Door(id="d", rooms=["r"], position=(1.0, 0.0), width=0.9)
+    face_of_door = next(w for w in walls if w.locate((1.0, 0.0))[1] == pytest.approx(0.0, abs=0.06))
+    # the wall left: the door's, right of the door; tall wardrobes take the others
+    tall = [
+        ("w1", box(0.05, 2.3, 3.95, 2.95), 2.2),
+        ("w2", box(0.05, 0.05, 0.7, 2.95), 2.2),
+        ("w3", box(3.3, 0.05, 3.95, 2.95), 2.2),
+    ]
+    cabinet = WallObjectRequest(id="cab", size=(0.8, 0.35, 0.7), kind="wall_cabinet")
+    painting = WallObjectRequest(id="pic", size=(0.8, 0.03, 0.6), kind="painting", height_m=1.45)
+    rng = np.random.default_rng(0)
+    for request, clear in ((cabinet, 0.6), (painting, 0.0)):
+        placed, _ = place_wall_objects(room, walls, [door], [], tall, [request], rng)
+        assert len(placed) == 1 and placed[0].wall_id == face_of_door.id
+        t, _ = face_of_door.locate((placed[0].x, placed[0].y))
+        t_door, _ = face_of_door.locate(door.position)
+        gap = abs(t - t_door) - request.size[0] / 2 - door.width / 2
+        assert gap >= clear - 1e-6

@@ -82,7 +82,7 @@ def check_plan(plan: ScenePlan, kb: KnowledgeBase) -> None:
             assert all(limits.min_side <= s <= limits.max_side for s in room.size)
         else:
             assert room.area_m2 is not None
-            assert limits.min_area - 0.05 <= room.area_m2 <= limits.max_area + 0.05
+            assert limits.min_area - 0.05 <= room.area_m2 <= limits.max_grown_area + 0.05
         floor = [o for o in room.objects if o.placement == "floor"]
         wall = [o for o in room.objects if o.placement == "wall"]
         assert sum(o.quantity for o in floor) <= MAX_FLOOR_INSTANCES

@@ -167,3 +167,13 @@ def test_each_refers_to_the_objects_named_before() -> None:
         ("microscope", 1)
     ]
     assert not any(o.name == "bench" for r in lab.rooms for o in r.objects)
+
+
+def test_twin_beds_are_a_pair_in_the_one_room_that_has_them() -> None:
+    plan = plan_offline("A flat with two bedrooms, one with twin beds.", 0)
+    beds = {r.id: [(o.name, o.quantity) for o in r.objects if "bed" in o.name] for r in plan.rooms}
+    with_twins = [rid for rid, found in beds.items() if ("single bed", 2) in found]
+    assert len(with_twins) == 1 and with_twins[0].startswith("bedroom")
+    assert all(not found for rid, found in beds.items() if not rid.startswith("bedroom"))
+    matching = _counts(plan_offline("A living room with matching armchairs.", 0))
+    assert matching["armchair"] == 2

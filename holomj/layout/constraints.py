@@ -119,6 +119,9 @@ ObjectName = Annotated[
 ]
 
 
+RELATION_WEIGHT = 10.0  # a constraint the prompt asked for (the templates' defaults weigh 1)
+
+
 class Constraint(FrozenModel):
     """One soft constraint on ``object``: a global one, or a relation to ``target``."""
 

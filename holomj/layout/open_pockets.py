@@ -6,20 +6,24 @@ door's keep-out zone, with a margin both ways (:data:`FREE_RADIUS_M`, :data:`PAS
 around :data:`ROBOT_RADIUS_M`). Furniture clusters can cut off pockets (the corner behind
 an armchair and a side table); :func:`open_pockets` moves the furniture around a pocket, a grid
 step at a time up to :data:`MAX_SHIFT_M`, keeping a move only when every hard rule still holds,
-no satisfied constraint is lost (unless less than :data:`CUT_OFF_SHARE` is reachable: then the
-door is cut off and soft constraints give way) and the reachable share grows, until the share
-reaches :data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were tried.
+the reachable share grows and no satisfied constraint is lost, except that below
+:data:`TEMPLATE_SHARE` the templates' constraints (not the prompt's, :data:`RELATION_WEIGHT`)
+may give way, and below :data:`CUT_OFF_SHARE` (the door is cut off) any soft constraint may;
+until the share reaches :data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were
+tried. While a door is cut off, only what borders both the pocket and the floor reached is
+moved.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 import shapely
 from scipy import ndimage
 
 from holomj.layout import geometry as geo
+from holomj.layout.constraints import RELATION_WEIGHT
 from holomj.layout.room_problem import PreparedRoom
 
 Pose = tuple[int, int, int]
@@ -34,6 +38,7 @@ TARGET_SHARE = 0.985
 MAX_SHIFT_M = 0.8
 MAX_ROUNDS = 8
 CUT_OFF_SHARE = 0.9  # below this share a door is cut off: moves may then cost soft constraints
+TEMPLATE_SHARE = 0.97  # below this share moves may cost the templates' (not the prompt's) ones
 MAX_TRIALS = 600  # poses tried in all, so that a crowded room stays fast
 
 
@@ -96,6 +101,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
         return poses
     poses = dict(poses)
     weight = satisfied_weight(prep, prep.metres(poses))
+    asked = asked_weight(prep, poses)
     steps = max(1, round(MAX_SHIFT_M / g))
     trials = 0
     for _ in range(MAX_ROUNDS):
@@ -114,8 +120,10 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                     if not checks.ok:
                         break
                     new_weight = satisfied_weight(prep, prep.metres(trial))
-                    if new_weight < weight - 1e-9 and share >= CUT_OFF_SHARE:
-                        continue  # soft constraints give way only to a door cut off
+                    if new_weight < weight - 1e-9 and not _may_give_way(
+                        share, asked, lambda trial=trial: asked_weight(prep, trial)
+                    ):
+                        continue
                     new_share, _ = meter.pockets(prep.footprints(trial))
                     # while the door is cut off, the largest share; among the moves that
                     # reconnect it, the one that keeps the most constraints
@@ -131,10 +139,29 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
             break
         _, poses = best
         weight = satisfied_weight(prep, prep.metres(poses))
+        asked = asked_weight(prep, poses)
         share, pocket, reached = meter.split(prep.footprints(poses))
         if share >= TARGET_SHARE:
             break
     return poses
+
+
+def _may_give_way(share: float, asked: float, asked_after: Callable[[], float]) -> bool:
+    """Whether a move that costs satisfied constraints may be made: any while the door is cut
+    off, the templates' only while the share is under :data:`TEMPLATE_SHARE`."""
+    if share < CUT_OFF_SHARE:
+        return True
+    return share < TEMPLATE_SHARE and asked_after() >= asked - 1e-9
+
+
+def asked_weight(prep: PreparedRoom, poses: dict[int, Pose]) -> float:
+    """Total weight of the prompt's constraints (weight at least ``RELATION_WEIGHT``) that hold."""
+    metres = prep.metres(poses)
+    return sum(
+        c.weight
+        for c in prep.constraints
+        if c.weight >= RELATION_WEIGHT - 1e-9 and prep.evaluate(c, metres)[0]
+    )
 
 
 def _bordering(

@@ -35,11 +35,10 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from typing import Any
 
-from holomj.layout.constraints import Constraint
+from holomj.layout.constraints import RELATION_WEIGHT, Constraint
 from holomj.layout.solve import ConstraintReport
 from holomj.spec.plan import PlanRelation, PlanRoom, instance_name
 
-RELATION_WEIGHT = 10.0
 SOURCE_PREFIX = "prompt: "
 _PLACE = {
     "corner": "corner",

@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from holomj.plan.draft import DraftObject, DraftPlan, DraftRoom, plural_name, remove_object
-from holomj.plan.use_area import floor_needs
+from holomj.plan.use_area import floor_needs, least_area
 
 
 def fit_room(state: DraftPlan, room: DraftRoom) -> None:
@@ -51,8 +51,9 @@ def fit_room(state: DraftPlan, room: DraftRoom) -> None:
     budget = limits.footprint_fraction * room.floor_area
     needs = floor_needs(state.kb, room, limits.footprint_fraction)
     needed = sum(needs[o.name] * o.quantity for o in floor() if _tier(o, room) > 0)
-    if needed > budget and not room.fixed and any(o.requested for o in floor()):
-        area = min(limits.max_grown_area, needed / limits.footprint_fraction)
+    least = max(needed / limits.footprint_fraction, least_area(room))
+    if least > room.floor_area + 1e-6 and not room.fixed and any(o.requested for o in floor()):
+        area = min(limits.max_grown_area, least)
         state.note(
             f"enlarged {room.id} from {room.area:.1f} to {area:.1f} m² to fit the objects asked for"
         )

@@ -18,7 +18,8 @@ floor object of a draft room its *need* in the units of the footprint budget
   and the margin around it that players stand in;
 * a **counter run module** (:data:`holomj.layout.counter_runs.RUN_CATEGORIES`: counters, the
   sink, the cooker) its width times its depth and the :data:`WORK_AISLE_M` in front of it
-  where the cook stands (and a galley's two runs share);
+  where the cook stands (and a galley's two runs share); and the run as a whole needs walls
+  as long as it is (:func:`least_area`);
 * anything else its footprint.
 
 Groups and play zones already hold their aisles, so they count at ``footprint_fraction /
@@ -40,6 +41,7 @@ from holomj.plan.seating import seat_pairs
 SEAT_ZONE_M = 0.7  # a seat's depth and the room to pull it out
 AISLE_M = 0.6  # a walkway beside a group (a robot passes; two people pass sideways)
 WORK_AISLE_M = 0.6  # half the 1.2 m kept before a counter run (the rest is the way through)
+RUN_WALL_SHARE = 0.4  # the share of a room's walls a counter run may take (doors, windows, corners)
 GROUP_FILL = 0.85  # the share of a room that groups with their aisles may fill
 ONE_SIDED = frozenset({"bar_counter", "bar", "counter", "kitchen_island", "reception_desk"})
 # Play tables: the margin (metres) kept free on every side for the players.
@@ -111,3 +113,14 @@ def floor_needs(kb: KnowledgeBase, room: DraftRoom, fraction: float) -> dict[str
         if obj.name in seats_left and seats_left[obj.name] < obj.quantity:
             needs[obj.name] = obj.footprint * seats_left[obj.name] / max(obj.quantity, 1)
     return needs
+
+
+def least_area(room: DraftRoom) -> float:
+    """The smallest floor (m²) whose walls hold the room's counter run: a square-ish room's
+    perimeter times :data:`RUN_WALL_SHARE` must be as long as the run's modules side by side."""
+    run = sum(
+        _size(o)[0] * o.quantity
+        for o in room.objects
+        if o.floor and o.kind.category in RUN_CATEGORIES
+    )
+    return (run / (4 * RUN_WALL_SHARE)) ** 2

@@ -102,3 +102,16 @@ def test_a_door_fenced_in_by_furniture_is_reopened_by_what_fences_it() -> None:
     opened = open_pockets(prep, poses)
     assert reachable_share(prep, opened) >= 0.9
     assert any(opened[k] != poses[k] for k in range(6))
+
+
+def test_what_gives_way_to_open_a_pocket() -> None:
+    from holomj.layout.open_pockets import CUT_OFF_SHARE, TEMPLATE_SHARE, _may_give_way
+
+    kept, lost = (lambda: 10.0), (lambda: 0.0)
+    # a door cut off: any soft constraint gives way
+    assert _may_give_way(CUT_OFF_SHARE - 0.01, 10.0, lost)
+    # a pocket short of the template share: the templates' constraints only
+    share = (CUT_OFF_SHARE + TEMPLATE_SHARE) / 2
+    assert _may_give_way(share, 10.0, kept) and not _may_give_way(share, 10.0, lost)
+    # above it: nothing gives way
+    assert not _may_give_way(TEMPLATE_SHARE + 0.001, 10.0, kept)

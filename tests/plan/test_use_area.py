@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from holomj.plan.offline import plan_offline
-from holomj.plan.use_area import AISLE_M, SEAT_ZONE_M, group_area, play_area
+from holomj.plan.use_area import AISLE_M, RUN_WALL_SHARE, SEAT_ZONE_M, group_area, play_area
 
 
 def _room(prompt: str):
@@ -54,3 +54,14 @@ def test_a_restaurant_keeps_every_chair_asked_for() -> None:
     )
     chairs = sum(o.quantity for o in room.objects if "chair" in o.name)
     assert chairs == 32
+
+
+def test_a_long_counter_run_gets_walls_long_enough() -> None:
+    room = _room("A kitchen with three long counters, a sink and a stove.")
+    run = sum(
+        o.size[0] * o.quantity
+        for o in room.objects
+        if o.category in {"kitchen_counter", "sink_counter", "stove"} and o.size
+    )
+    assert run >= 6.0
+    assert room.area_m2 is not None and room.area_m2 >= (run / (4 * RUN_WALL_SHARE)) ** 2 - 0.1

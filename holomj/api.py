@@ -17,6 +17,7 @@ from holomj.library.store import AssetLibrary as _StoreLibrary
 if TYPE_CHECKING:
     from holomj.jobs.add_robot import AddRobotResult
     from holomj.jobs.compile import CompileReport
+    from holomj.jobs.export import ExportResult
     from holomj.jobs.generate import GenerateResult
     from holomj.jobs.populate import PopulateResult
     from holomj.jobs.stage_log import Listener
@@ -113,9 +114,16 @@ def compile(
     profile: Literal["default", "mjx"] = "default",
     seed: int = 0,
     check_seconds: float = 1.0,
+    fix: bool | None = None,
+    allow_invalid: bool = False,
 ) -> CompileReport:
     """``holomj compile``: a holomj ``scene.json``, ProcTHOR/Holodeck house or SceneDef ->
     an MJCF folder ``out``; the format is detected unless ``format`` names it.
+
+    ``fix`` makes the scene stand (objects on the floor or their receptacle, clear of walls
+    and each other, settled; default: on for imported houses and SceneDefs, off for holomj
+    scenes); a scene that cannot be saved raises
+    :class:`~holomj.jobs.compile.SceneUnstableError` unless ``allow_invalid``.
 
     Returns a :class:`~holomj.jobs.compile.CompileReport`. Raises
     :class:`~holomj.errors.FormatError` / :class:`~holomj.errors.SpecError` for bad input
@@ -134,6 +142,8 @@ def compile(
         robot=robot,
         profile=profile,
         seed=seed,
+        fix=fix,
+        allow_invalid=allow_invalid,
     )
 
 
@@ -245,4 +255,26 @@ def add_robot(
         room=room,
         profile=profile,
         replace=replace,
+    )
+
+
+def export(
+    folder: Path | str,
+    format: Literal["glb", "usd", "urdf"] = "glb",
+    out: Path | str | None = None,
+    *,
+    colliders: bool = False,
+) -> ExportResult:
+    """``holomj export``: the scene folder as GLB (the scene as seen, Y-up), USD (a UsdPhysics
+    stage; needs the ``export`` extra) or URDF (one per articulated asset), written to ``out``
+    (default ``folder/export/scene.glb``, ``scene.usdz`` or ``urdf/``). ``colliders`` (GLB):
+    also the collision-only geoms. Returns an :class:`~holomj.jobs.export.ExportResult`
+    (``.target``, ``.files``, ``.bytes``, ``.timings_s``, ``.details``). Raises
+    :class:`~holomj.errors.InputError` for a folder that is not a holomj scene, an unknown
+    format, a target of the wrong kind or a missing usd-core, and
+    :class:`~holomj.errors.ExportError` when writing fails."""
+    from holomj.jobs.export import export_folder
+
+    return export_folder(
+        Path(folder), format, Path(out) if out is not None else None, colliders=colliders
     )

@@ -84,8 +84,12 @@ def _compile_and_validate(job: Job, folder: Path, options: JobOptions) -> Stabil
     from holomj.jobs.compile import compile_file
     from holomj.jobs.validate import validate
 
-    compile_file(
-        Path(job.input), folder, library_path=options.library, check_seconds=options.check_seconds
+    compile_file(  # an object that cannot be saved makes the job "unstable", not "failed"
+        Path(job.input),
+        folder,
+        library_path=options.library,
+        check_seconds=options.check_seconds,
+        allow_invalid=True,
     )
     report = validate(folder)
     write_report(folder, REPORT_JSON, report.model_dump(mode="json"))

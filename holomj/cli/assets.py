@@ -135,6 +135,97 @@ def import_command(
         raise typer.Exit(code=1)
 
 
+@assets_app.command("import-objathor")
+def import_objathor_command(
+    directory: Annotated[
+        Path,
+        typer.Argument(
+            metavar="DIR",
+            help="objathor asset folder (with annotations.json.gz and assets/<uid>/ or <uid>/).",
+        ),
+    ],
+    library: LibraryOption = None,
+    uids: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--uids", metavar="UID,...", help="Only these uids, comma-separated (default: all)."
+        ),
+    ] = None,
+    colliders: Annotated[
+        str,
+        typer.Option(
+            help="shipped: the assets' own convex colliders (CoACD where an asset has none); "
+            "coacd: decompose with CoACD."
+        ),
+    ] = "shipped",
+    workers: Annotated[int, typer.Option(min=1, max=64, help="Parallel processes.")] = 1,
+    preset: Annotated[
+        str, typer.Option(help="CoACD settings: fast (seconds), default, fine (minutes).")
+    ] = "default",
+    timeout: Annotated[
+        float | None, typer.Option(help="CoACD time limit per attempt, seconds.")
+    ] = None,
+    thumbnails: Annotated[
+        bool, typer.Option("--thumbnails/--no-thumbnails", help="Render thumbnails.")
+    ] = True,
+    accept_fallback: Annotated[
+        bool,
+        typer.Option(
+            "--accept-fallback",
+            help="Cache fallback decompositions (CoACD unavailable, crashed or timed out) as "
+            "final and reuse cached ones; without it the next import retries CoACD.",
+        ),
+    ] = False,
+    strict: StrictOption = False,
+    as_json: JsonOption = False,
+) -> None:
+    """Import Objaverse assets of an objathor folder; each asset's id is its uid.
+
+    Holodeck houses name these uids as assetId, so `holomj compile house.json --library LIB`
+    then uses the real assets. Annotations give the category, description, placement, mass
+    and receptacle flag; meshes are converted from THOR's Y-up frame to holomj's.
+
+    Exits with 0 when every uid was imported (degraded ones included, unless --strict), 1 when
+    any failed (the others are kept), 2 for a bad folder or option.
+    """
+    from holomj.jobs.objathor import import_objathor, parse_uids
+
+    columns = (
+        TextColumn("[progress.description]{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+    )
+    with Progress(*columns, console=err_console, disable=as_json, transient=True) as progress:
+        task = progress.add_task("importing", total=None)
+        result = guard(
+            lambda: import_objathor(
+                directory,
+                library=library,
+                uids=parse_uids(uids),
+                colliders=colliders,
+                preset=preset,
+                timeout_s=timeout,
+                workers=workers,
+                thumbnails=thumbnails,
+                accept_fallback=accept_fallback,
+                on_planned=lambda total: progress.update(task, total=total),
+                on_done=lambda outcome: progress.update(
+                    task, advance=1, description=outcome.asset_id
+                ),
+            )
+        )
+    summary = result.summary
+    if as_json:
+        emit_json(result.to_dict())
+    else:
+        _print_summary(result.library, summary, accept_fallback)
+        for o in summary.failed:  # the whole error, unwrapped, whatever the table cut
+            err_console.print(f"error: {o.asset_id}: {o.error}", markup=False, soft_wrap=True)
+    if summary.failed or (strict and summary.degraded):
+        raise typer.Exit(code=1)
+
+
 def _print_summary(root: Path, summary: Any, accept_fallback: bool) -> None:
     """The import table, a warning line per degraded asset and the counts."""
     table = Table(title=f"imported into {root}")

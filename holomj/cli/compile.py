@@ -1,8 +1,10 @@
 """``holomj compile INPUT -o OUT``: a scene or house file -> a self-contained MuJoCo package
-(the job: :mod:`holomj.jobs.compile`).
+(the job: :mod:`holomj.jobs.compile`). Imported houses and SceneDefs are made to stand
+(``--no-fix`` compiles them as imported; ``--fix`` makes a holomj scene stand too).
 
 Exit codes: 0 when OUT was written, 2 for bad input (OUT is then not created, and an existing
-OUT is untouched), 1 for a failure of ours.
+OUT is untouched), 1 for a failure of ours, and when objects could not be made to stand
+(nothing is written then, unless ``--allow-invalid``).
 """
 
 from __future__ import annotations
@@ -52,6 +54,24 @@ def compile_command(
     robot: RobotOption = None,
     profile: ProfileOption = "default",
     seed: SeedOption = 0,
+    fix: Annotated[
+        bool | None,
+        typer.Option(
+            "--fix/--no-fix",
+            help="Make the scene stand: objects on the floor or dropped onto their receptacles, "
+            "clear of walls and each other, settled and validated (default: on for "
+            "ProcTHOR/Holodeck houses and SceneDefs, off for holomj scenes).",
+            show_default=False,
+        ),
+    ] = None,
+    allow_invalid: Annotated[
+        bool,
+        typer.Option(
+            "--allow-invalid",
+            help="Write the scene even when objects could not be made to stand (marked "
+            '"valid": false in import_report.json).',
+        ),
+    ] = False,
     as_json: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
@@ -71,6 +91,8 @@ def compile_command(
                 robot=robot,
                 profile=profile,
                 seed=seed,
+                fix=fix,
+                allow_invalid=allow_invalid,
             )
         )
     if as_json:
@@ -91,6 +113,8 @@ def compile_command(
                 f"  robot {report.robot['name']} at ({x:.2f}, {y:.2f}), yaw "
                 f"{report.robot['yaw_deg']:.1f}°, in {report.robot['room']}"
             )
+        if report.stand is not None:
+            _print_stand(report.stand)
         if report.substitutions:
             out_console.print(
                 f"  {len(report.substitutions)} assets substituted (see import_report.json)"
@@ -99,3 +123,27 @@ def compile_command(
             out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
         if report.sim_warnings:
             out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
+
+
+def _print_stand(stand: dict) -> None:
+    """What making the scene stand changed, and the verdict."""
+    before, after = stand["penetrations_before"], stand["penetrations_after"]
+    out_console.print(
+        f"  made it stand: {len(stand['moved'])} moved, {len(stand['dropped'])} dropped onto "
+        f"receptacles, {len(stand['separated'])} separated; penetrations "
+        f"{before['count']} (max {before['max_m'] * 1000:.0f} mm) -> {after['count']} "
+        f"(max {after['max_m'] * 1000:.1f} mm)"
+    )
+    validation = stand.get("validation")
+    if stand["valid"]:
+        out_console.print(
+            f"  [green]valid:[/] {validation['stable']}/{validation['objects']} objects stable"
+        )
+        return
+    unsaved = stand["unsaved"]
+    out_console.print(
+        f"  [bold red]INVALID[/] (written with --allow-invalid): {len(unsaved)} object(s) "
+        "could not be made to stand (see import_report.json)"
+    )
+    for row in unsaved[:8]:
+        out_console.print(f"    {row['object']}: {row['why']}", markup=False)

@@ -1,5 +1,6 @@
-"""``holomj populate OUT --on OBJECT --objects CAT[:N],...``: spawn-and-drop small objects
-(the job: :mod:`holomj.jobs.populate`).
+"""``holomj populate OUT --on OBJECT [--objects CAT[:N],... | --count N]``: spawn-and-drop
+small objects (the job: :mod:`holomj.jobs.populate`); without ``--objects``, ``--count`` of them
+drawn from what sits on such a receptacle in AI2-THOR (:mod:`holomj.jobs.receptacle_priors`).
 
 OUT is a folder written by ``holomj compile`` or ``holomj generate``. The scene's own assets
 come from its ``assets/`` library, the new objects' from ``--library`` (default: the default
@@ -30,11 +31,17 @@ def populate_command(
     scene: FolderArg,
     on: Annotated[str, typer.Option("--on", help="Id of the receptacle object in the scene.")],
     objects: Annotated[
-        str,
+        str | None,
         typer.Option(
-            "--objects", help="Categories or asset ids with counts: CAT[:N],... e.g. mug:2,book."
+            "--objects",
+            help="Categories or asset ids with counts: CAT[:N],... e.g. mug:2,book. Without "
+            "it, --count objects are drawn from what sits on such a receptacle in AI2-THOR.",
         ),
-    ],
+    ] = None,
+    count: Annotated[
+        int,
+        typer.Option("--count", min=1, max=20, help="Objects drawn when --objects is not given."),
+    ] = 3,
     seed: SeedOption = 0,
     library: LibraryOption = None,
     max_attempts: Annotated[
@@ -49,7 +56,7 @@ def populate_command(
     from holomj.jobs.folder import POPULATE_REPORT
     from holomj.jobs.populate import parse_objects, populate_folder
 
-    requests = guard(lambda: parse_objects(objects))
+    requests = guard(lambda: parse_objects(objects)) if objects is not None else None
     library_path = library_root(library)
     outcome = guard(
         lambda: populate_folder(
@@ -59,6 +66,7 @@ def populate_command(
             seed=seed,
             library_path=library_path,
             max_attempts=max_attempts,
+            count=count,
         )
     )
     if as_json:
@@ -69,6 +77,12 @@ def populate_command(
             f"[bold {colour}]placed {outcome.placed}/{outcome.requested}[/] on {on} "
             f"-> {outcome.folder} (see {POPULATE_REPORT})"
         )
+        if outcome.report.get("drawn_from"):
+            names = ", ".join(f"{r['name']}:{r['count']}" for r in outcome.report["requests"])
+            out_console.print(
+                f"  drawn from the {outcome.report['drawn_from']} statistics: {names}",
+                markup=False,
+            )
         for placement in outcome.report["placements"]:
             if not placement["accepted"]:
                 out_console.print(

@@ -3,7 +3,12 @@
 Order of resolution for a ProcTHOR/Holodeck material:
 
 1. a ``color`` given with the material: a scene material of that colour;
-2. the name in the table ``holomj/data/procthor_materials.json`` (mapped by meaning);
+2. the name in the table ``holomj/data/procthor_materials.json`` (mapped by meaning), looked up
+   as written, then ignoring case, spaces and punctuation (``"BrownMarbleFake 1"`` is
+   ``BrownMarbleFake1``), then also ignoring a trailing number (``"YellowDrywall 2"`` is
+   ``YellowDrywall``). An entry is a built-in material name, or ``{"like": built-in, "rgba":
+   [r, g, b, a]}`` for a colour of its own: a scene material ``procthor_<snake_case name>`` with
+   the built-in's finish and that colour (its name's words still pick the procedural pattern);
 3. keyword rules on the name (wood, tile, marble, carpet, paint colours...);
 4. a deterministic colour from a hash of the name, registered as a scene material, with a
    warning.
@@ -13,6 +18,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 from functools import cache
 from importlib import resources
 
@@ -43,12 +49,59 @@ _KEYWORD_RULES: tuple[tuple[tuple[str, ...], str], ...] = (
 )
 
 
+Entry = tuple[str, tuple[float, float, float, float] | None]  # (built-in, own colour)
+
+
 @cache
-def procthor_table() -> dict[str, str]:
-    """The name table shipped in ``holomj/data/procthor_materials.json``."""
+def procthor_entries() -> dict[str, Entry]:
+    """The name table shipped in ``holomj/data/procthor_materials.json``: name -> (built-in
+    material, own colour or None). Entries naming no built-in material are left out."""
     text = resources.files("holomj.data").joinpath("procthor_materials.json").read_text("utf-8")
-    table = json.loads(text)
-    return {k: v for k, v in table.items() if not k.startswith("_") and v in BUILTIN_MATERIALS}
+    entries: dict[str, Entry] = {}
+    for name, value in json.loads(text).items():
+        if name.startswith("_"):
+            continue
+        if isinstance(value, str):
+            entries[name] = (value, None)
+        elif isinstance(value, dict) and isinstance(value.get("rgba"), list):
+            rgba = tuple(float(c) for c in value["rgba"])
+            entries[name] = (value.get("like", ""), (*rgba, 1.0)[:4])  # type: ignore[assignment]
+    return {k: v for k, v in entries.items() if v[0] in BUILTIN_MATERIALS}
+
+
+def procthor_table() -> dict[str, str]:
+    """Table names that map to a built-in material as it is."""
+    return {k: v for k, (v, rgba) in procthor_entries().items() if rgba is None}
+
+
+def _key(name: str, drop_number: bool = False) -> str:
+    key = "".join(ch for ch in name.lower() if ch.isalnum())
+    return key.rstrip("0123456789") or key if drop_number else key
+
+
+@cache
+def _entries_by_key(drop_number: bool) -> dict[str, str]:
+    keyed: dict[str, str] = {}
+    for name in sorted(procthor_entries()):
+        keyed.setdefault(_key(name, drop_number), name)
+    return keyed
+
+
+def table_name(name: str) -> str | None:
+    """The table entry a foreign material name refers to (see the module notes), or None."""
+    if name in procthor_entries():
+        return name
+    for drop_number in (False, True):
+        found = _entries_by_key(drop_number).get(_key(name, drop_number))
+        if found is not None:
+            return found
+    return None
+
+
+def snake_case(name: str) -> str:
+    """``"RoseGraniteTiles"`` -> ``"rose_granite_tiles"``."""
+    spaced = re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", name)
+    return "_".join(re.findall(r"[a-z0-9]+", spaced.lower())) or "material"
 
 
 def keyword_material(name: str) -> str | None:
@@ -107,9 +160,15 @@ class MaterialResolver:
             return material_id
         if name in BUILTIN_MATERIALS:
             return name
-        table = procthor_table()
-        if name in table:
-            return table[name]
+        entry_name = table_name(name)
+        if entry_name is not None:
+            base, rgba = procthor_entries()[entry_name]
+            if rgba is None:
+                return base
+            material_id = f"procthor_{snake_case(entry_name)}"[:128]
+            look = BUILTIN_MATERIALS[base].model_copy(update={"rgba": rgba})
+            self.scene_materials[material_id] = look
+            return material_id
         by_keyword = keyword_material(name)
         if by_keyword is not None:
             return by_keyword

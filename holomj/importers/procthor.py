@@ -12,7 +12,7 @@ Supported inputs
   connections between rooms.
 
 Fields read: ``rooms[].{id, roomType, floorPolygon, floorMaterial, wallMaterial}``,
-``walls[].{id, roomId, polygon, material, empty}``, ``doors[]``/``windows[]``
+``walls[].{id, roomId, polygon, material, color, empty}``, ``doors[]``/``windows[]``
 ``.{id, assetId, room0, room1, wall0, wall1, holePolygon | boundingBox, openable}``,
 ``objects[].{id, assetId, position, rotation, kinematic, children, object_name, roomId,
 vertices}``, ``proceduralParameters.{lights, ceilingMaterial, ceilingColor}``, ``wall_height``,
@@ -22,10 +22,18 @@ Conventions (see :mod:`holomj.importers.frames`)
 -----------------------------------------------
 * holomj ``(X, Y, Z) = (unity x, unity z, unity y)``; ``yaw_deg = 90 - rotation.y``; a non-zero
   ``rotation.x``/``rotation.z`` gives a full ``quat`` instead.
+* What an object is and how big: an assetId in the AI2-THOR table
+  (:mod:`holomj.importers.thor_assets`, 1,653 assets) gives its THOR type, hence its holomj
+  category (``holomj/data/thor_types.json``), and its true bounding box (THOR ``(width, height,
+  depth)`` -> holomj ``(depth, width, height)`` in the object's own frame). The stand-in asset
+  is then scaled to that box within the limits of :mod:`holomj.importers.substitute` (else a
+  box of that size). Other assetIds: the THOR type spelled by the assetId or the id, with a
+  typical size (no scaling); Holodeck objects keep their ``object_name`` and footprint. Ids of
+  the 0.0.1 schema (``4|2|4``, ``small|4|1``) never name a category.
 * An object's ProcTHOR ``position`` is the centre of its bounding box; holomj wants the centre of
   the footprint at the bottom, so ``z = unity y - height / 2`` with the height of the asset used.
-  When the asset was substituted, an object that stood on the floor (or on its parent's top) in
-  the source is put on the floor (or on the stand-in parent's top).
+  The source's bottom comes from the true (THOR) height, so an object that stood on the floor
+  (or on its parent's top) in the source is put on the floor (or on the stand-in parent's top).
 * Walls: holomj derives walls from the room polygons, so ProcTHOR walls only serve to locate
   openings (``holePolygon`` x runs along ``wall0`` from its polygon's first vertex, y is up),
   to give each room its wall material (the most common one of its walls) and the wall height
@@ -65,6 +73,7 @@ from holomj.importers.common import (
 )
 from holomj.importers.frames import (
     is_tilted,
+    normalise_deg,
     quat_from_unity,
     unity_forward,
     unity_point,
@@ -74,7 +83,14 @@ from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
 from holomj.importers.result import ImportResult
 from holomj.importers.state import ImportState
-from holomj.importers.substitute import category_size, choose_asset
+from holomj.importers.substitute import MIN_EXTENT, category_size, choose_asset
+from holomj.importers.thor_assets import (
+    thor_asset,
+    thor_category,
+    thor_stand_ins,
+    thor_type,
+    thor_type_size,
+)
 from holomj.library.store import AssetLibrary
 from holomj.spec.scene import Door, Light, Room, SceneObject, Window
 from holomj.spec.walls import Wall, room_polygon
@@ -107,6 +123,8 @@ class _Placed:
     room: str | None
     src_top: float  # top in the source (metres, world z)
     used_top: float  # top of the asset used
+    category: str = ""
+    substituted: bool = False
 
 
 def import_procthor(data: Any, library: AssetLibrary, source: str) -> ImportResult:
@@ -197,7 +215,7 @@ class _ProcthorImport(ImportState):
                 end=end,
                 top=max(c[1] for c in coords),
                 room=room,
-                material=_material_spec(node.opt("material")),
+                material=_material_spec(node.opt("material"), node.opt("color")),
                 empty=node.bool_("empty", False),
                 exterior="exterior" in wall_id.split("|"),
             )
@@ -447,7 +465,7 @@ class _ProcthorImport(ImportState):
         placed: dict[str, _Placed] = {}
         deferred: list[tuple[Node, str]] = []
         for item in items:
-            parent_raw = _holodeck_parent(item, raw_ids)
+            parent_raw = _holodeck_parent(item, raw_ids) if self.holodeck else None
             if parent_raw is not None:
                 deferred.append((item, parent_raw))
             else:
@@ -467,28 +485,45 @@ class _ProcthorImport(ImportState):
             rx, ry, rz = rot.num("x", 0.0), rot.num("y", 0.0), rot.num("z", 0.0)
         x, y, _ = unity_point(ux, uy, uz)
         yaw = yaw_from_unity(ry)
-        category = _category(node, raw_id, asset)
+        kind = _kind(node, raw_id, asset)
+        if parent is not None and _fixture_of(kind.category, parent):
+            self.merged.append(
+                {
+                    "object": raw_id,
+                    "category": kind.category,
+                    "into": parent.id,
+                    "why": f"the stand-in {parent.category} has its own {kind.category}",
+                }
+            )
+            return
+        src_size, size_source = kind.size, kind.size_source
         footprint = _footprint(node, yaw)
-        src_size = None
-        if footprint is not None:
+        if footprint is not None and size_source != "thor":
             height = 2 * uy if parent is None and uy > 0 else None
-            src_size = (footprint[0], footprint[1], height) if height else None
+            if height:
+                src_size, size_source = (footprint[0], footprint[1], height), "footprint"
         object_id = self.object_ids.new(raw_id, f"{node.path}.id")
         choice, warning = choose_asset(
             self.library,
             object_id=object_id,
             requested=asset,
-            category=category,
+            category=kind.category,
             size=_positive(src_size) if src_size else None,
+            fit=size_source == "thor",
+            stand_ins=kind.stand_ins,
+            size_source=size_source,
         )
         if warning:
             self.warnings.append(f"{node.path}: {warning}")
-        if choice.substitution is not None:
-            self.substitutions.append(choice.substitution)
+        sub = choice.substitution
+        if sub is not None:
+            self.substitutions.append(sub)
+        # The source's bottom: from its true height when a table or the input gives one.
         src_height = choice.height
-        if choice.substitution is not None:
-            estimate = src_size or _category_estimate(category)
-            src_height = estimate[2] if estimate else choice.height
+        if size_source == "thor" and src_size is not None:
+            src_height = src_size[2]
+        elif sub is not None and sub.source_size is not None:
+            src_height = sub.source_size[2]
         z = self._object_z(uy, src_height, choice.height, parent)
         room = None
         room_node = node.opt("roomId")
@@ -502,16 +537,18 @@ class _ProcthorImport(ImportState):
             "id": object_id,
             "asset": choice.asset,
             "position": (x, y, z),
-            "yaw_deg": yaw,
+            "yaw_deg": normalise_deg(yaw + choice.turn_deg) if choice.turn_deg else yaw,
             "scale": choice.scale,
             "static": node.bool_("kinematic", False),
             "support": parent.id if parent is not None else None,
             "room": room,
         }
         if is_tilted(rx, rz):
-            fields["quat"] = quat_from_unity(rx, ry, rz)
+            fields["quat"] = _turn_quat(quat_from_unity(rx, ry, rz), choice.turn_deg)
         self.objects.append(build_model(SceneObject, fields, self.source, node.path))
-        me = _Placed(object_id, room, uy + src_height / 2, z + choice.height)
+        me = _Placed(
+            object_id, room, uy + src_height / 2, z + choice.height, kind.category, sub is not None
+        )
         placed.setdefault(raw_id, me)
         children = node.opt("children")
         for child in children.items() if children is not None else []:
@@ -577,15 +614,21 @@ class _ProcthorImport(ImportState):
 
 
 # -- small readers ---------------------------------------------------------------------------
-def _material_spec(node: Node | None) -> tuple[str | None, tuple[float, ...] | None]:
-    """A material given as a string (old schema) or ``{"name", "color"}`` (1.0.0)."""
-    if node is None:
-        return None, None
+def _material_spec(
+    node: Node | None, color: Node | None = None
+) -> tuple[str | None, tuple[float, ...] | None]:
+    """A material given as a string (old schema) or ``{"name", "color"}`` (1.0.0). ``color``:
+    a colour given beside the material (old-schema walls tint ``PureWhite`` with their own
+    ``color``), used when the material brings none."""
+    own = color if color is not None and color.is_dict() else None
+    if node is None or node.value is None:
+        return None, _rgb(own) if own is not None else None
     if isinstance(node.value, str):
-        return node.value, None
+        return node.value, _rgb(own) if own is not None else None
     node.dict()
-    color = node.opt("color")
-    return node.str_("name", None), _rgb(color) if color is not None else None
+    inner = node.opt("color")
+    inner = inner if inner is not None else own
+    return node.str_("name", None), _rgb(inner) if inner is not None else None
 
 
 def _rgb(node: Node) -> tuple[float, ...]:
@@ -618,20 +661,85 @@ def _hole(node: Node) -> tuple[float, float, float, float]:
     return x0, x1, max(y0, 0.0), y1
 
 
-def _category(node: Node, raw_id: str, asset: str) -> str:
-    """The object's category: Holodeck ``object_name`` (``"coffee table-0"`` -> ``"coffee
-    table"``); else the id before ``|`` (``"Sofa|2|1"`` -> ``"Sofa"``, Holodeck small objects
-    ``"mug-0|table-0 (kitchen)"`` -> ``"mug"``); else the assetId before ``_``."""
+@dataclass(frozen=True)
+class _Kind:
+    """What an object is: its holomj category, categories that may stand in for it, and its
+    source size (x = depth, y = width, z = height, own frame) with where that came from."""
+
+    category: str
+    stand_ins: tuple[str, ...] = ()
+    size: tuple[float, float, float] | None = None
+    size_source: str | None = None
+
+
+_NOT_A_TYPE = {"small", "surface", "exterior", "object"}
+
+
+# A fixture that a stand-in of its parent's category already has (a THOR sink's faucet is an
+# object of its own; holomj's washbasins and sink counters come with theirs).
+FIXTURES: dict[str, frozenset[str]] = {
+    "faucet": frozenset({"washbasin", "sink_counter", "sink", "kitchen_sink", "bathtub"}),
+}
+
+
+def _fixture_of(category: str, parent: _Placed) -> bool:
+    """Whether an object of ``category`` is a fixture of its substituted ``parent``."""
+    return parent.substituted and parent.category in FIXTURES.get(category, frozenset())
+
+
+def _kind(node: Node, raw_id: str, asset: str) -> _Kind:
+    """The object's kind.
+
+    * Holodeck ``object_name`` (``"coffee table-0"`` -> ``"coffee table"``) names the category.
+    * An assetId in the AI2-THOR table (:mod:`holomj.importers.thor_assets`) gives the THOR type,
+      hence the category (``holomj/data/thor_types.json``), and the true size.
+    * Otherwise the THOR type spelled by the assetId's leading words (``"Coffee_Table_3"`` ->
+      ``CoffeeTable``), else by the id's first part (``"Sofa|2|1"`` -> ``Sofa``; Holodeck small
+      objects ``"mug-0|table-0 (kitchen)"`` -> ``Mug``), with a typical size of the type.
+    * Otherwise the id's first part when it is a word (never the number or ``small`` that start
+      ProcTHOR 0.0.1 ids such as ``4|2|4`` and ``small|4|1``), else the assetId before ``_``.
+    """
+    thor = thor_asset(asset) if asset else None
     name = node.opt("object_name")
     if name is not None:
-        text = name.string()
-    elif "|" in raw_id:
-        text = raw_id.split("|", 1)[0]
-    elif asset:
-        text = asset.split("_", 1)[0]
-    else:
-        text = raw_id
-    return _INSTANCE_SUFFIX.sub("", text).strip()
+        text = _INSTANCE_SUFFIX.sub("", name.string()).strip()
+        if thor is not None:
+            return _Kind(text, size=thor.size, size_source="thor")
+        return _Kind(text)
+    if thor is not None:
+        return _thor_kind(thor.type, thor.size, "thor")
+    first = _INSTANCE_SUFFIX.sub("", raw_id.split("|", 1)[0]).strip()
+    word = first if _is_word(first) else ""
+    thor_name = _type_from_asset_id(asset) or (thor_type(word) if word else None)
+    if thor_name is not None:
+        size = category_size(thor_name) or category_size(thor_category(thor_name) or "")
+        size = size or thor_type_size(thor_name)
+        return _thor_kind(thor_name, size, "category" if size else None)
+    text = word or (asset.split("_", 1)[0] if asset else "") or "object"
+    size = category_size(text)
+    return _Kind(text, size=size, size_source="category" if size else None)
+
+
+def _thor_kind(
+    thor_name: str, size: tuple[float, float, float] | None, source: str | None
+) -> _Kind:
+    # The THOR type itself comes last: a library may file assets under THOR's names ("Chair").
+    category = thor_category(thor_name) or thor_name
+    return _Kind(category, (*thor_stand_ins(thor_name), thor_name), size, source)
+
+
+def _is_word(text: str) -> bool:
+    return any(c.isalpha() for c in text) and text.lower() not in _NOT_A_TYPE
+
+
+def _type_from_asset_id(asset: str) -> str | None:
+    """The THOR type spelled by the longest run of leading words of an assetId."""
+    words = [w for w in re.split(r"[_\s]+", asset) if w]
+    for end in range(len(words), 0, -1):
+        found = thor_type("".join(words[:end]))
+        if found is not None:
+            return found
+    return None
 
 
 def _holodeck_parent(item: Node, raw_ids: set[str]) -> str | None:
@@ -666,9 +774,17 @@ def _footprint(node: Node, yaw_deg: float) -> tuple[float, float] | None:
     return (round(max(along) - min(along), 6), round(max(across) - min(across), 6))
 
 
+def _turn_quat(
+    quat: tuple[float, float, float, float], turn_deg: float
+) -> tuple[float, float, float, float]:
+    """``quat`` followed by a turn of ``turn_deg`` about the object's own Z."""
+    if not turn_deg:
+        return quat
+    half = math.radians(turn_deg) / 2
+    c, s = math.cos(half), math.sin(half)
+    w, x, y, z = quat
+    return (w * c - z * s, x * c + y * s, y * c - x * s, z * c + w * s)
+
+
 def _positive(size: tuple[float, float, float]) -> tuple[float, float, float]:
-    return (max(size[0], 0.01), max(size[1], 0.01), max(size[2], 0.01))
-
-
-def _category_estimate(category: str) -> tuple[float, float, float] | None:
-    return category_size(category) if category else None
+    return (max(size[0], MIN_EXTENT), max(size[1], MIN_EXTENT), max(size[2], MIN_EXTENT))

@@ -27,6 +27,7 @@ class ImportState:
         self.materials = MaterialResolver()
         self.warnings: list[str] = []
         self.substitutions: list[Substitution] = []
+        self.merged: list[dict[str, str]] = []  # objects left out as part of their parent
         self.room_ids = IdMap("room")
         self.opening_ids = IdMap("opening")
         self.object_ids = IdMap("object")
@@ -74,4 +75,5 @@ class ImportState:
             format=fmt,
             substitutions=self.substitutions,
             warnings=self.materials.warnings + self.warnings + renamed,
+            merged=self.merged,
         )

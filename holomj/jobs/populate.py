@@ -32,16 +32,18 @@ from holomj.jobs.folder import (
     require_scene_folder,
     write_scene_folder,
 )
+from holomj.jobs.receptacle_priors import DEFAULT_COUNT, prior_requests
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.physics.scene_io import loaded_from_compiled
 from holomj.physics.settle import validate_loaded
-from holomj.physics.spawn import merge_libraries, populate
-from holomj.seeds import MAX_SEED, seed_rng
+from holomj.physics.spawn import find_object, merge_libraries, populate
+from holomj.seeds import MAX_SEED, seed_rng, stage_rng
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
 
 MAX_ATTEMPTS = 1000
+MAX_DRAWN = 20  # objects drawn for a receptacle when none are named
 _ITEM = re.compile(r"^\s*([A-Za-z0-9_][A-Za-z0-9_.:|+\- ]*?)\s*(?::\s*(\d+)\s*)?$")
 
 
@@ -89,14 +91,17 @@ class PopulateResult:
 def populate_folder(
     folder: Path | str,
     receptacle_id: str,
-    requests: list[tuple[str, int]] | str,
+    requests: list[tuple[str, int]] | str | None,
     *,
     seed: int = 0,
     library_path: Path | None = None,
     max_attempts: int = 20,
+    count: int = DEFAULT_COUNT,
 ) -> PopulateResult:
     """Populate the scene in ``folder`` and write it back (see the module docstring).
-    ``requests``: ``[(category or asset id, count), ...]`` or the ``"mug:2,book"`` text form.
+    ``requests``: ``[(category or asset id, count), ...]`` or the ``"mug:2,book"`` text form;
+    None draws ``count`` objects from what sits on such a receptacle in AI2-THOR
+    (:mod:`holomj.jobs.receptacle_priors`).
 
     Raises :class:`~holomj.errors.InputError` for a folder that is not a holomj scene, a bad
     seed or attempt count, an unknown receptacle or request.
@@ -113,6 +118,14 @@ def populate_folder(
     if library_path is not None:
         libraries.append(AssetLibrary.open(library_path))
     library = merge_libraries(*libraries)
+    drawn_from = None
+    if requests is None:
+        if not 1 <= count <= MAX_DRAWN:
+            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
+        category = library.get(find_object(scene, receptacle_id).asset).meta.category
+        requests, drawn_from = prior_requests(
+            category, library, stage_rng(seed, "populate", "priors"), count
+        )
 
     def with_robot(compiled: CompiledScene) -> CompiledScene:
         return attach_folder_robot(compiled, folder)
@@ -130,6 +143,7 @@ def populate_folder(
     run = {
         "receptacle": receptacle_id,
         "requests": [{"name": n, "count": c} for n, c in requests],
+        "drawn_from": drawn_from,
         "seed": seed,
         "max_attempts": max_attempts,
         **result.to_dict(),

@@ -28,7 +28,7 @@ import numpy as np
 from holomj.errors import InputError
 from holomj.mjcf.compiler import CompiledScene, compile_spec
 from holomj.mjcf.objects import Furniture
-from holomj.physics.audit import GeomOwners, find_overlaps
+from holomj.physics.audit import GeomOwners, Overlap, find_overlaps
 from holomj.physics.scene_io import LoadedScene
 from holomj.physics.settle import ObjectTrack, Validation, run_validation
 from holomj.spec.report import RepairAction, Thresholds, Unsaved
@@ -94,9 +94,30 @@ def repair_scene(
     return RepairOutcome(final, repaired, sorted(unsaved, key=lambda u: u.name))
 
 
-def separate(loaded: LoadedScene, th: Thresholds) -> tuple[SceneSpec, dict[str, str], list]:
+PushRule = Callable[
+    [mujoco.MjModel, mujoco.MjData, GeomOwners, Overlap, int, np.ndarray], np.ndarray | None
+]
+"""``rule(model, data, owners, overlap, mover, push)``: the push (world frame) to give object
+``mover`` (an index into ``owners.names``) to resolve ``overlap``, where ``push`` is the default
+one (along the contact normal, as deep as the pair); None keeps the default."""
+
+
+def separate(
+    loaded: LoadedScene,
+    th: Thresholds,
+    *,
+    max_move_m: float | None = None,
+    push_rule: PushRule | None = None,
+    fixed: frozenset[str] | set[str] = frozenset(),
+) -> tuple[SceneSpec, dict[str, str], list]:
     """Push interpenetrating objects apart; returns the new scene, why each object moved, and
-    the objects that could not be saved."""
+    the objects that could not be saved.
+
+    ``max_move_m`` (default ``th.repair_max_m``): a pair whose push is longer is left alone
+    and its mover reported unsaved. ``push_rule`` may replace the default push (along the
+    contact normal) of a pair, e.g. to keep floor objects on the floor; objects in ``fixed``
+    never move (like structure). An object pushed back the way it was pushed the round before
+    is squeezed: from then on the other party of its overlaps moves."""
     model = loaded.model
     scene = loaded.scene
     if scene is None:
@@ -114,6 +135,10 @@ def separate(loaded: LoadedScene, th: Thresholds) -> tuple[SceneSpec, dict[str, 
     why: dict[str, str] = {}
     unsaved: dict[str, str] = {}
     skipped: set[tuple[int, int]] = set()
+    limit = th.repair_max_m if max_move_m is None else max_move_m
+    stuck: set[int] = set()
+    last: dict[int, np.ndarray] = {}
+    fixed_ids = {owners.names.index(name) for name in fixed if name in owners.names}
     try:
         for _ in range(MAX_ROUNDS):
             mujoco.mj_kinematics(model, data)
@@ -126,26 +151,37 @@ def separate(loaded: LoadedScene, th: Thresholds) -> tuple[SceneSpec, dict[str, 
                 break
             pushes: dict[int, np.ndarray] = {}
             for overlap in overlaps:  # deepest first
-                mover, push = _mover(owners, track, overlap, index, supports)
-                if mover is None:
+                mover, push = _mover(owners, track, overlap, index, supports, fixed_ids, stuck)
+                if mover is None or mover in pushes:
                     continue
                 name = owners.names[mover]
                 other = owners.label(
                     overlap.geom1 if owners.geom_owner[overlap.geom2] == mover else overlap.geom2
                 )
-                if overlap.depth > th.repair_max_m:
+                push = push * (1.0 + 0.5 * th.tolerance_m / overlap.depth)
+                if push_rule is not None:
+                    ruled = push_rule(model, data, owners, overlap, mover, push)
+                    push = push if ruled is None else np.asarray(ruled, dtype=float)
+                if overlap.depth > limit or float(np.linalg.norm(push)) > limit + th.tolerance_m:
                     skipped.add((overlap.geom1, overlap.geom2))
+                    needs = float(np.linalg.norm(push))
+                    extra = f", needs a move of {needs * 1000:.0f} mm" if push_rule else ""
                     unsaved.setdefault(
                         name,
-                        f"penetrates {other} by {overlap.depth * 1000:.1f} mm "
-                        f"(repairs up to {th.repair_max_m * 1000:.0f} mm)",
+                        f"penetrates {other} by {overlap.depth * 1000:.1f} mm{extra} "
+                        f"(repairs up to {limit * 1000:.0f} mm)",
                     )
                     continue
-                if mover not in pushes:
-                    pushes[mover] = push * (1.0 + 0.5 * th.tolerance_m / overlap.depth)
-                    why.setdefault(name, f"separated from {other}")
+                pushes[mover] = push
+                why.setdefault(name, f"separated from {other}")
             if not pushes:
                 break
+            for mover, push in pushes.items():
+                # pushed back the way it came last round: squeezed (between a wall and a
+                # neighbour, say); from now on the other party of its overlaps moves instead
+                if mover in last and float(np.dot(push, last[mover])) < 0.0:
+                    stuck.add(mover)
+            last = pushes
             for mover, push in pushes.items():
                 body = int(owners.object_bodies[mover])
                 if body in free_adr:
@@ -176,18 +212,24 @@ def separate(loaded: LoadedScene, th: Thresholds) -> tuple[SceneSpec, dict[str, 
 def _mover(
     owners: GeomOwners,
     track: ObjectTrack,
-    overlap,
+    overlap: Overlap,
     index: dict[str, int],
     supports: dict[str, str | None],
+    fixed: set[int] | frozenset[int] = frozenset(),
+    stuck: set[int] | frozenset[int] = frozenset(),
 ) -> tuple[int | None, np.ndarray]:
-    """Which object of an overlapping pair moves, and its push (world frame)."""
+    """Which object of an overlapping pair moves, and its push (world frame); objects in
+    ``fixed`` (indices) count as structure, objects ``stuck`` give way to the other party."""
     o1, o2 = int(owners.geom_owner[overlap.geom1]), int(owners.geom_owner[overlap.geom2])
+    o1, o2 = (-1 if o1 in fixed else o1), (-1 if o2 in fixed else o2)
     if o1 < 0 and o2 < 0:
         return None, overlap.push2
     if o1 < 0:
         return o2, overlap.push2
     if o2 < 0:
         return o1, -overlap.push2
+    if (o1 in stuck) != (o2 in stuck):
+        return (o2, overlap.push2) if o1 in stuck else (o1, -overlap.push2)
     n1, n2 = owners.names[o1], owners.names[o2]
     d1, d2 = bool(track.dynamic[o1]), bool(track.dynamic[o2])
     if d1 != d2:

@@ -151,7 +151,7 @@ def populate(
     """
     start = time.perf_counter()
     _check_numbers(max_attempts, drop_height, settle_s, batch)
-    receptacle = _find_object(scene, receptacle_id)
+    receptacle = find_object(scene, receptacle_id)
     rec_asset = library.get(receptacle.asset)
     surfaces = world_surfaces(receptacle, rec_asset.meta)
     if not surfaces:
@@ -231,7 +231,9 @@ def _check_numbers(max_attempts: int, drop_height: float, settle_s: float, batch
             raise InputError(message)
 
 
-def _find_object(scene: SceneSpec, object_id: str) -> SceneObject:
+def find_object(scene: SceneSpec, object_id: str) -> SceneObject:
+    """The scene's object ``object_id``; an :class:`InputError` naming ``--on`` (with the
+    closest ids) when there is none."""
     for obj in scene.objects:
         if obj.id == object_id:
             return obj

@@ -24,11 +24,14 @@ TEST_ASSETS = {
 }
 
 
-def write_library(root: Path, assets: dict[str, tuple[str, float, float, float]]) -> Path:
-    """Write ``library.json`` and one ``assets/<id>/asset.json`` per asset (a box mesh each)."""
+def write_library(root: Path, assets: dict[str, tuple]) -> Path:
+    """Write ``library.json`` and one ``assets/<id>/asset.json`` per asset (a box mesh each).
+
+    Each asset is ``(category, size x, size y, size z)``, optionally followed by its placement
+    list (default ``["floor"]``)."""
     box_obj = Path(str(resources.files("holomj.data").joinpath("builtin", "box", "box.obj")))
     index = {}
-    for asset_id, (category, sx, sy, sz) in assets.items():
+    for asset_id, (category, sx, sy, sz, *rest) in assets.items():
         folder = root / "assets" / asset_id
         folder.mkdir(parents=True)
         shutil.copy(box_obj, folder / "box.obj")
@@ -37,6 +40,7 @@ def write_library(root: Path, assets: dict[str, tuple[str, float, float, float]]
             "id": asset_id,
             "category": category,
             "size": [sx, sy, sz],
+            "placement": rest[0] if rest else ["floor"],
             "visual": [{"mesh": "box.obj"}],
             "collision": [
                 {
@@ -64,3 +68,20 @@ def library(tmp_path_factory: pytest.TempPathFactory) -> AssetLibrary:
 def load_fixture(name: str) -> dict:
     """A fixture file parsed as JSON."""
     return json.loads((FIXTURES / name).read_text())
+
+
+# Real ProcTHOR houses (copies of allenai/ai2thor files, see their README.md) beside the repo.
+PROCTHOR_HOUSES = Path(__file__).resolve().parents[3] / "shared" / "procthor" / "houses"
+REAL_HOUSES = (
+    "procthor_ai2thor_143.json",  # schema 0.0.1
+    "procthor_ai2thor_1310.json",  # schema 0.0.1
+    "procthor_ai2thor_train_4.json",  # schema 1.0.0
+)
+
+
+def load_real_house(name: str) -> dict:
+    """A real house from ``../shared/procthor/houses``; skips visibly when it is absent."""
+    path = PROCTHOR_HOUSES / name
+    if not path.is_file():
+        pytest.skip(f"real ProcTHOR house not found at {path}")
+    return json.loads(path.read_text())

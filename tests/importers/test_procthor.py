@@ -150,18 +150,24 @@ def test_position_z_uses_height_of_asset(library: AssetLibrary, house: dict) -> 
 
 def test_substitution_report(result: ImportResult) -> None:
     subs = {s.object_id: s for s in result.substitutions}
+    # Sofa_1 is no AI2-THOR asset: the THOR type comes from the id, the size from the
+    # category's typical size, and the closest sofa stands in unscaled.
     sofa = subs["Sofa|2|0"]
     assert (sofa.requested_asset, sofa.category, sofa.used_asset) == (
         "Sofa_1",
-        "Sofa",
+        "sofa",
         "sofa_modern",
     )
     assert sofa.reason == "not in library; same category, closest size"
+    assert (sofa.scale, sofa.size_source) == (1.0, "category")
     fridge = subs["Fridge|1|3"]
     assert fridge.used_asset == "builtin:box"
-    assert "no asset of category 'Fridge'" in fridge.reason
-    # the box is scaled to the category's typical size (depth, width, height)
-    assert _obj(result.scene, "Fridge|1|3").scale == pytest.approx((0.75, 0.8, 1.8))
+    assert "no asset of category 'fridge'" in fridge.reason
+    # Fridge_1 is in the AI2-THOR table (x 1.013 wide, y 1.9668 high, z 0.7242 deep): the box
+    # gets that true size (depth, width, height)
+    assert _obj(result.scene, "Fridge|1|3").scale == pytest.approx((0.7242, 1.013, 1.9668))
+    assert fridge.source_size == pytest.approx((0.7242, 1.013, 1.9668))
+    assert fridge.size_source == "thor"
     # unknown category: a 0.5 m cube with a warning
     assert _obj(result.scene, "Zorblax|2|4").scale == pytest.approx((0.5, 0.5, 0.5))
     assert any("Zorblax" in w and "0.5 m cube" in w for w in result.warnings)
@@ -174,6 +180,10 @@ def test_substitution_report(result: ImportResult) -> None:
         "category",
         "used_asset",
         "reason",
+        "scale",
+        "source_size",
+        "size_source",
+        "turn_deg",
     }
 
 

@@ -12,8 +12,10 @@ from holomj.cli import app
 from holomj.errors import InputError
 from holomj.jobs.folder import load_for_physics
 from holomj.jobs.populate import parse_objects, populate_folder
+from holomj.jobs.receptacle_priors import MAX_SAME, prior_requests, receptacle_weights
 from holomj.library import AssetLibrary
 from holomj.physics.smoke import simulate
+from holomj.seeds import stage_rng
 from tests.physics.spawn_helpers import receptacle_scene
 
 
@@ -116,3 +118,29 @@ def test_parse_objects() -> None:
     for bad in ("", " , ", "mug:0", ":3", "mug:2000"):
         with pytest.raises(InputError):
             parse_objects(bad)
+
+
+def test_without_objects_it_draws_what_sits_on_such_a_receptacle(
+    folder: Path, default_library: AssetLibrary
+) -> None:
+    result = invoke(folder, default_library, "--on", "rec", "--count", "4", "--seed", "2")
+    assert result.exit_code == 0, result.output
+    assert "drawn from the ai2thor statistics" in result.stdout
+    report = json.loads((folder / "populate_report.json").read_text())
+    assert report["drawn_from"] == "ai2thor" and report["requested"] == 4
+    weights, _ = receptacle_weights("dining_table")
+    assert all(r["name"] in weights and r["count"] <= MAX_SAME for r in report["requests"])
+    # the same seed draws the same objects
+    rng = stage_rng(2, "populate", "priors")
+    again, source = prior_requests("dining_table", default_library, rng, 4)
+    assert source == "ai2thor"
+    assert again == [(r["name"], r["count"]) for r in report["requests"]]
+
+
+def test_the_priors_pool_thors_receptacle_types_and_fall_back_to_holomjs() -> None:
+    counter, source = receptacle_weights("kitchen_counter")
+    assert source == "ai2thor" and {"bowl", "mug", "plate"} <= set(counter)
+    _, source = receptacle_weights("kitchen_island")  # no THOR receptacle maps to it
+    assert source == "holomj"
+    with pytest.raises(InputError, match="--on"):
+        prior_requests("no_such_furniture", AssetLibrary.open(None), stage_rng(0, "x"), 2)

@@ -1,0 +1,498 @@
+"""Import the assets of an objathor directory into a library, one asset per uid (id = uid).
+
+:mod:`asset_pipeline.objathor` reads the directory (layout, frames, safety); this module builds
+each asset: the mesh dict's points go to the asset frame (``M Ry(yRotOffset)``, triangles
+re-wound), then the steps of :mod:`asset_pipeline.importer`: normalisation (origin at the
+footprint centre of the bottom, size checks; no rescale, the dict is at real size), repair,
+colliders, support surfaces, metadata and mass. Results are cached and committed one asset at a
+time like ``holomj assets import`` (:mod:`asset_pipeline.manage`): the cache key hashes the
+pipeline's code, the options, the uid, its annotation and the files of its folder, so a rerun of
+unchanged assets is instant and a killed run resumes.
+
+Colliders: ``shipped`` uses the dict's convex pieces (capped, pulled inside the visual mesh and
+sliver-checked by :func:`asset_pipeline.hulls.postprocess`); an asset without shipped colliders
+(an OBJ/GLB source, or a dict without ``colliders``) **falls back to CoACD** with a warning in
+``derivation.json`` (see ``holomj assets show UID``). ``coacd`` always runs the pipeline's
+CoACD with its timeout, fallback chain and cache rules (:mod:`asset_pipeline.decompose`,
+:mod:`asset_pipeline.manage`).
+
+Metadata: the category is the holomj category named in the annotation's ``category`` (else its
+``synset``), by the words and aliases of ``data/categories.json`` ("eames chair" -> chair),
+else the annotation's category itself in snake case; the placement comes from the ``on*``
+flags (else the category's default); the mass is the annotation's (else the material estimate
+of :mod:`asset_pipeline.physical`); an asset the annotation (else the dict's
+``receptacleCandidate``) says is **not** a receptacle gets no support surfaces, as in
+Holodeck/THOR where small objects only go on receptacles. The original annotation values,
+THOR's bounding box and any size disagreement with it are recorded in ``derivation.json``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import multiprocessing
+import re
+import secrets
+import shutil
+import time
+from collections.abc import Callable, Sequence
+from concurrent.futures import Future, ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+
+from asset_pipeline.decompose import CoacdParams
+from asset_pipeline.library_writer import AssetBundle, add_assets, dumps_json
+from asset_pipeline.manage import (
+    CACHE_DIR,
+    DERIVATION_FILE,
+    PENDING_DIR,
+    ImportSummary,
+    JobOutcome,
+    load_cached,
+    pipeline_version,
+    store_cached,
+)
+from asset_pipeline.objathor import (
+    ID_PATTERN,
+    ObjathorAnnotation,
+    ObjathorJob,
+    ObjathorMesh,
+    gltf_to_asset,
+    parse_annotation,
+    read_mesh,
+    unity_to_asset,
+)
+from holomj.errors import FormatError, HolomjError, SpecError
+
+__all__ = [
+    "COLLIDER_MODES",
+    "ObjathorOptions",
+    "cache_key",
+    "import_objathor_asset",
+    "process_objathor_job",
+    "run_objathor_imports",
+]
+
+COLLIDER_MODES = ("shipped", "coacd")
+
+
+# -- one asset -------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class ObjathorOptions:
+    """How to import: collider source, CoACD settings (for ``coacd`` and the fallback)."""
+
+    colliders: Literal["shipped", "coacd"] = "shipped"
+    coacd: CoacdParams = field(default_factory=CoacdParams)
+    max_faces: int = 2_000_000
+
+
+def import_objathor_asset(
+    uid: str,
+    mesh: ObjathorMesh,
+    annotation: ObjathorAnnotation,
+    options: ObjathorOptions | None = None,
+) -> Any:
+    """Build the asset bundle of one objathor asset (nothing is written to disk).
+
+    Returns an :class:`asset_pipeline.importer.ImportedAsset` whose report says what was done.
+    """
+    from asset_pipeline import annotate, physical
+    from asset_pipeline.decompose import decompose
+    from asset_pipeline.hulls import postprocess
+    from asset_pipeline.importer import ImportedAsset
+    from asset_pipeline.normalise import normalise
+    from asset_pipeline.objfile import obj_bytes
+    from asset_pipeline.proximity import MeshProximity
+    from asset_pipeline.repair import repair
+    from asset_pipeline.surfaces import support_surfaces
+
+    options = options or ObjathorOptions()
+    where = str(mesh.source)
+    if not ID_PATTERN.match(uid):
+        raise SpecError(
+            f"invalid asset id {uid!r}",
+            where=where,
+            fix="uids become asset ids: letters, digits and _ . : | + - (not starting with a "
+            "symbol)",
+        )
+    timings: dict[str, float] = {}
+    clock = time.perf_counter()
+
+    def lap(name: str) -> None:
+        nonlocal clock
+        now = time.perf_counter()
+        timings[name] = round(now - clock, 3)
+        clock = now
+
+    warnings = list(annotation.warnings) + list(mesh.warnings)
+    if mesh.frame == "gltf":
+        matrix, scale = gltf_to_asset(mesh.parts, annotation)
+        if annotation.scale_m is None:
+            warnings.append(f"{where}: no annotation scale; the glTF is used at its own units")
+    else:
+        matrix, scale = unity_to_asset(mesh.y_rot_offset_deg), 1.0
+    mirrored = np.linalg.det(matrix) < 0
+    turned = [
+        dataclasses.replace(
+            p,
+            vertices=(p.vertices @ matrix.T) * scale,
+            faces=p.faces[:, ::-1].copy() if mirrored else p.faces,
+        )
+        for p in mesh.parts
+    ]
+    parts, frame = normalise(turned, where, "z", "+x", None)
+    repaired = repair(parts)
+    if len(repaired.physics.faces) == 0:
+        raise FormatError("the mesh has only degenerate faces", where=where)
+    lap("normalise_repair")
+
+    manifold = repaired.watertight and repaired.winding_consistent
+    proximity = MeshProximity(repaired.physics)
+    shipped = None
+    if options.colliders == "shipped":
+        if mesh.colliders:
+            shipped = [(c @ matrix.T) * scale + frame.translation for c in mesh.colliders]
+        else:
+            warnings.append(f"{where}: no shipped colliders; decomposed with CoACD instead")
+    if shipped is not None:
+        raw_hulls = shipped
+        method, degraded_reason, attempts, preprocess = "shipped", None, [], "none"
+    else:
+        decomposition = decompose(repaired.physics, options.coacd, manifold)
+        raw_hulls = decomposition.hulls
+        method, degraded_reason = decomposition.method, decomposition.degraded_reason
+        attempts, preprocess = decomposition.attempts, decomposition.preprocess_mode
+        if degraded_reason:
+            warnings.append(f"degraded decomposition: {degraded_reason}")
+    lap("decompose")
+    hullset = postprocess(raw_hulls, repaired.physics, proximity, repaired.watertight)
+    lap("hulls")
+
+    receptacle = annotation.receptacle
+    receptacle_source = "annotation" if receptacle is not None else None
+    if receptacle is None and mesh.receptacle_candidate is not None:
+        receptacle, receptacle_source = mesh.receptacle_candidate, "receptacleCandidate"
+    surfaces = [] if receptacle is False else support_surfaces(repaired.physics)
+    lap("surfaces")
+
+    files: dict[str, bytes] = {}
+    visual, textures = [], {}
+    for k, vis in enumerate(repaired.visuals):
+        name = f"visual_{k}.obj"
+        files[name] = obj_bytes(vis.vertices, vis.faces, vis.uv)
+        entry: dict[str, Any] = {"mesh": name, "rgba": list(vis.material.rgba)}
+        if vis.material.texture_png is not None:
+            digest = hashlib.sha256(vis.material.texture_png).hexdigest()
+            if digest not in textures:
+                textures[digest] = f"texture_{len(textures)}.png"
+                files[textures[digest]] = vis.material.texture_png
+            entry["texture"] = textures[digest]
+        visual.append(entry)
+    collision: list[dict[str, Any]] = []
+    for k, collider in enumerate(hullset.colliders):
+        if collider.kind == "mesh":
+            name = f"hull_{k:02d}.obj"
+            files[name] = obj_bytes(collider.vertices, collider.faces)
+            collision.append({"kind": "mesh", "mesh": name, "volume_m3": collider.volume})
+        else:
+            collision.append(
+                {
+                    "kind": "box",
+                    "size": list(collider.size),
+                    "pos": list(collider.pos),
+                    "quat": list(collider.quat),
+                    "volume_m3": collider.volume,
+                }
+            )
+    volume = sum(c.volume for c in hullset.colliders)
+
+    category, category_source = _category(annotation, physical)
+    info = physical.category_info(category, frame.size)
+    massed = physical.resolve_mass(info, repaired.physics, volume, given=annotation.mass_kg)
+    warnings += massed.warnings
+    placement = list(annotation.placement) if annotation.placement else list(info.placement)
+    size_check = _size_check(frame.size, annotation)
+    if size_check.get("warning"):
+        warnings.append(f"{uid}: {size_check['warning']}")
+    derived = {
+        "id": uid,
+        "category": category,
+        "description": annotation.description or annotate.describe(category),
+        "size": list(frame.size),
+        "mass_kg": massed.mass_kg,
+        "density_kg_m3": massed.mass_kg / volume,
+        "friction": info.friction,
+        "placement": placement,
+        "upright": info.upright,
+        "front": "+x",
+        "visual": visual,
+        "collision": collision,
+        "maxhullvert": hullset.maxhullvert,
+        "surfaces": [
+            {"height": s.height, "polygon": [list(p) for p in s.polygon], "area_m2": s.area}
+            for s in surfaces
+        ],
+        "source": f"objathor {uid} ({mesh.source.name}, {mesh.format}, front +z -> +x, "
+        f"yRotOffset {mesh.y_rot_offset_deg:g} deg)",
+        "license": annotation.license,
+        "attribution": annotation.attribution,
+    }
+    meta, _ = annotate.build_meta(derived, {}, {}, where)
+    lap("annotate")
+    report = {
+        "asset_id": uid,
+        "source": {
+            "file": str(mesh.source),
+            "sha256": hashlib.sha256(mesh.source.read_bytes()).hexdigest(),
+            "format": f"objathor-{mesh.format}",
+            "uid": uid,
+            "texture": str(mesh.texture) if mesh.texture else None,
+            "vertices": sum(len(p.vertices) for p in mesh.parts),
+            "faces": sum(len(p.faces) for p in mesh.parts),
+            "shipped_colliders": len(mesh.colliders) if mesh.colliders else 0,
+        },
+        "objathor": {
+            "annotation": annotation.as_report(),
+            "y_rot_offset_deg": mesh.y_rot_offset_deg,
+            "receptacle": receptacle,
+            "receptacle_source": receptacle_source,
+            "category_source": category_source,
+            "size_check": size_check,
+        },
+        "normalisation": frame.as_report() | {"matrix": matrix.round(9).tolist(), "scale": scale},
+        "repairs": repaired.stats,
+        "watertight": repaired.watertight,
+        "winding_consistent": repaired.winding_consistent,
+        "degraded": degraded_reason is not None,
+        "degraded_reason": degraded_reason,
+        "decomposition": {
+            "method": method,
+            "colliders_option": options.colliders,
+            "preprocess_mode": preprocess,
+            "attempts": attempts,
+        },
+        "quality": hullset.quality,
+        "surfaces": [{"height": s.height, "area_m2": s.area} for s in surfaces],
+        "physical": {
+            "category": meta.category,
+            "category_source": category_source,
+            "category_known": info.known,
+            "mass_kg": meta.mass,
+            "mass_source": "annotation" if annotation.mass_kg is not None else massed.source,
+            "mass_range_kg": list(info.mass_range_kg),
+            "mass_derivation": massed.derivation,
+            "friction": meta.friction,
+            "placement": meta.placement,
+        },
+        "files": {name: len(data) for name, data in sorted(files.items())},
+        "timings_s": timings,
+        "warnings": warnings,
+    }
+    return ImportedAsset(bundle=AssetBundle(meta=meta, files=files), report=report)
+
+
+def _category(annotation: ObjathorAnnotation, physical: Any) -> tuple[str, str]:
+    """(holomj category, where it came from): a table category named in the annotation's
+    category or synset, else the annotation's category in snake case, else the default."""
+    texts = [("category", annotation.category)]
+    if annotation.synset:
+        texts.append(("synset", annotation.synset.split(".")[0]))
+    for source, text in texts:
+        if text:
+            guessed = physical.guess_category(Path(re.sub(r"[/\\]", " ", text)))
+            if guessed:
+                return guessed, f"annotation {source} {text!r}"
+    if annotation.category:
+        snake = re.sub(r"[^a-z0-9]+", "_", annotation.category.lower()).strip("_")[:64]
+        if snake:
+            return snake, "annotation category"
+    return physical.DEFAULT_CATEGORY, "default"
+
+
+def _size_check(size: tuple[float, float, float], annotation: ObjathorAnnotation) -> dict:
+    """Our size against THOR's bounding box (the size Holodeck placed), when known."""
+    if annotation.bbox_unity_m is None:
+        return {"thor_bbox_m": None}
+    bx, by, bz = annotation.bbox_unity_m
+    expected = (bz, bx, by)  # asset X = Unity z, Y = Unity x, Z = Unity y
+    worst = max(abs(a - e) for a, e in zip(size, expected, strict=True))
+    check: dict[str, Any] = {
+        "thor_bbox_m": list(annotation.bbox_unity_m),
+        "expected_size_m": [round(v, 6) for v in expected],
+        "largest_difference_m": round(worst, 6),
+    }
+    if worst > max(0.02, 0.05 * max(expected)):
+        check["warning"] = (
+            f"size {_fmt(size)} m differs from THOR's box {_fmt(expected)} m by "
+            f"{worst:.3f} m; Holodeck footprints assume THOR's"
+        )
+    return check
+
+
+def _fmt(values: Sequence[float]) -> str:
+    return " x ".join(f"{v:.3f}" for v in values)
+
+
+def cache_key(job: ObjathorJob, options: ObjathorOptions) -> str:
+    """Content address of one import: pipeline code, options, uid, annotation, asset files."""
+    digest = hashlib.sha256()
+    digest.update(pipeline_version().encode())
+    digest.update(b"objathor")
+    digest.update(json.dumps(_jsonable(options), sort_keys=True).encode())
+    digest.update(job.uid.encode())
+    digest.update(json.dumps(job.annotation, sort_keys=True, default=str).encode())
+    for path in sorted(job.folder.iterdir()):
+        if path.is_file() and not path.name.startswith("."):
+            digest.update(path.name.encode())
+            digest.update(hashlib.sha256(path.read_bytes()).digest())
+    return digest.hexdigest()[:32]
+
+
+def _jsonable(value: Any) -> Any:
+    if dataclasses.is_dataclass(value):
+        return {f.name: _jsonable(getattr(value, f.name)) for f in dataclasses.fields(value)}
+    return value
+
+
+def process_objathor_job(
+    job: ObjathorJob,
+    options: ObjathorOptions,
+    cache_root: Path,
+    thumbnails: bool,
+    accept_fallback: bool = False,
+) -> JobOutcome:
+    """Import one uid into the cache (or find it there); never raises for bad input."""
+    start = time.perf_counter()
+    path = str(job.mesh_file or job.folder)
+    outcome = JobOutcome(path=path, asset_id=job.uid, ok=False, id_note=job.id_note)
+    try:
+        key = cache_key(job, options)
+        outcome.cache_key = key
+        cached = load_cached(cache_root, key, job.uid)
+        if cached is not None and (accept_fallback or not cached[1].get("degraded")):
+            bundle, report = cached
+            outcome.cached, outcome.entry = True, key
+        else:
+            bundle, report = _import_bundle(job, options, key, thumbnails, accept_fallback)
+            final = not report["degraded"] or report["fallback_accepted"]
+            entry = key if final else f"{PENDING_DIR}/{key}-{secrets.token_hex(4)}"
+            store_cached(cache_root, entry, bundle)
+            outcome.entry = entry
+        outcome.ok = True
+        outcome.degraded = bool(report.get("degraded"))
+        outcome.degraded_reason = report.get("degraded_reason")
+        outcome.hulls = len(bundle.meta.collision)
+        outcome.mass_kg = round(bundle.meta.mass, 4)
+    except HolomjError as err:
+        outcome.error = err.one_line()
+    outcome.seconds = round(time.perf_counter() - start, 3)
+    return outcome
+
+
+def _import_bundle(
+    job: ObjathorJob, options: ObjathorOptions, key: str, thumbnails: bool, accept_fallback: bool
+) -> tuple[AssetBundle, dict]:
+    """Read and import ``job``: the bundle (thumbnails, ``derivation.json``) and the report."""
+    if job.mesh_file is None:
+        raise FormatError("no mesh file", where=str(job.folder))
+    where = job.annotation_source or str(job.folder)
+    if job.annotation is None:
+        annotation = ObjathorAnnotation(warnings=(f"{job.uid}: no annotation; defaults used",))
+    elif isinstance(job.annotation, dict) and "__error__" in job.annotation:
+        raise FormatError(str(job.annotation["__error__"]))
+    else:
+        annotation = parse_annotation(job.annotation, f"{where}: {job.uid}")
+        if annotation.uid is not None and annotation.uid != job.uid:
+            note = f"{where}: the annotation's uid {annotation.uid!r} is not its key {job.uid!r}"
+            annotation = dataclasses.replace(annotation, warnings=(*annotation.warnings, note))
+    mesh = read_mesh(job.mesh_file, options.max_faces)
+    imported = import_objathor_asset(job.uid, mesh, annotation, options)
+    bundle = imported.bundle
+    if thumbnails:
+        from asset_pipeline.thumbnails import with_thumbnails
+
+        bundle = with_thumbnails(bundle)
+    report = {
+        **imported.report,
+        "fallback_accepted": bool(imported.report["degraded"] and accept_fallback),
+        "cache_key": key,
+        "pipeline_version": pipeline_version(),
+    }
+    files = {**bundle.files, DERIVATION_FILE: dumps_json(report)}
+    return AssetBundle(meta=bundle.meta, files=files), report
+
+
+def run_objathor_imports(
+    jobs: Sequence[ObjathorJob],
+    library_root: Path,
+    options: ObjathorOptions,
+    *,
+    workers: int = 1,
+    thumbnails: bool = True,
+    accept_fallback: bool = False,
+    on_done: Callable[[JobOutcome], None] | None = None,
+) -> ImportSummary:
+    """Import ``jobs`` into the library at ``library_root`` with ``workers`` processes.
+
+    Each success is committed to the library as soon as it is done (one index rename per
+    asset, so a killed run keeps what it finished and a rerun takes it from the cache); a uid
+    that fails is reported and the others go on.
+    """
+    root = Path(library_root)
+    cache_root = root / CACHE_DIR
+    cache_root.mkdir(parents=True, exist_ok=True)
+    summary = ImportSummary()
+
+    def finish(job: ObjathorJob, outcome: JobOutcome) -> None:
+        _commit(root, cache_root, job, outcome)
+        summary.outcomes.append(outcome)
+        if on_done is not None:
+            on_done(outcome)
+
+    if workers <= 1 or len(jobs) <= 1:
+        for job in jobs:
+            finish(job, process_objathor_job(job, options, cache_root, thumbnails, accept_fallback))
+    else:
+        context = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+            futures: dict[Future[JobOutcome], ObjathorJob] = {
+                pool.submit(
+                    process_objathor_job, job, options, cache_root, thumbnails, accept_fallback
+                ): job
+                for job in jobs
+            }
+            for future in as_completed(futures):
+                job = futures[future]
+                try:
+                    outcome = future.result()
+                except BrokenProcessPool:
+                    outcome = JobOutcome(
+                        str(job.mesh_file or job.folder),
+                        job.uid,
+                        ok=False,
+                        error="worker process died",
+                        id_note=job.id_note,
+                    )
+                finish(job, outcome)
+    summary.outcomes.sort(key=lambda o: o.asset_id)
+    return summary
+
+
+def _commit(root: Path, cache_root: Path, job: ObjathorJob, outcome: JobOutcome) -> None:
+    """Add a successful outcome's bundle to the library; then drop its pending folder."""
+    if not outcome.ok or outcome.entry is None:
+        return
+    try:
+        cached = load_cached(cache_root, outcome.entry, job.uid)
+        if cached is None:
+            outcome.ok, outcome.error = False, "cache entry vanished before commit"
+        else:
+            add_assets(root, [cached[0]])
+    finally:
+        if outcome.entry.startswith(f"{PENDING_DIR}/"):
+            shutil.rmtree(cache_root / outcome.entry, ignore_errors=True)

@@ -10,13 +10,15 @@ the reachable share grows and no satisfied constraint is lost, except that below
 :data:`TEMPLATE_SHARE` the templates' constraints (not the prompt's, :data:`RELATION_WEIGHT`)
 may give way, and below :data:`CUT_OFF_SHARE` (the door is cut off) any soft constraint may;
 until the share reaches :data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were
-tried. While a door is cut off, only what borders both the pocket and the floor reached is
-moved.
+tried (:data:`MAX_TRIALS_SHORT` when less than :data:`TEMPLATE_SHARE` is reachable; a move that
+opens the pocket and keeps every constraint is taken at once). While a door is cut off, only
+what borders both the pocket and the floor reached is moved.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import Any
 
 import numpy as np
 import shapely
@@ -40,6 +42,7 @@ MAX_ROUNDS = 8
 CUT_OFF_SHARE = 0.9  # below this share a door is cut off: moves may then cost soft constraints
 TEMPLATE_SHARE = 0.97  # below this share moves may cost the templates' (not the prompt's) ones
 MAX_TRIALS = 600  # poses tried in all, so that a crowded room stays fast
+MAX_TRIALS_SHORT = 1500  # ... when less than TEMPLATE_SHARE of the floor is reachable
 
 
 class ReachMeter:
@@ -103,6 +106,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     weight = satisfied_weight(prep, prep.metres(poses))
     asked = asked_weight(prep, poses)
     steps = max(1, round(MAX_SHIFT_M / g))
+    budget = MAX_TRIALS if share >= TEMPLATE_SHARE else MAX_TRIALS_SHORT
     trials = 0
     for _ in range(MAX_ROUNDS):
         best: tuple[tuple[bool, float, float], dict[int, Pose]] | None = None
@@ -113,7 +117,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
             for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)):
                 for n in range(1, steps + 1):
                     trials += 1
-                    if trials > MAX_TRIALS:
+                    if trials > budget:
                         break
                     trial = {**poses, i: (x + dx * n, y + dy * n, k)}
                     checks, _ = hard_checks(prep, trial)
@@ -135,6 +139,12 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                     )
                     if new_share > share + 1e-6 and (best is None or key > best[0]):
                         best = (key, trial)
+                    if new_share >= TARGET_SHARE and new_weight >= weight - 1e-9:
+                        break  # the pocket is open and nothing is lost: look no further
+                if _solved(best, weight):
+                    break
+            if _solved(best, weight):
+                break
         if best is None:
             break
         _, poses = best
@@ -144,6 +154,14 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
         if share >= TARGET_SHARE:
             break
     return poses
+
+
+def _solved(best: tuple[tuple[bool, float, float], Any] | None, weight: float) -> bool:
+    """Whether the best move so far reaches the target share and keeps every constraint."""
+    if best is None:
+        return False
+    (reconnected, first, second), _ = best
+    return reconnected and second >= TARGET_SHARE and first >= weight - 1e-9
 
 
 def _may_give_way(share: float, asked: float, asked_after: Callable[[], float]) -> bool:

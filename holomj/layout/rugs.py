@@ -9,9 +9,10 @@ Where it goes (:func:`lay_rug`): centred under the room's main piece, the first 
 :data:`ANCHOR_CATEGORIES` (a coffee table, a dining table, a bed, ...), its long side along the
 piece's long side; else in the middle of the room. Several rugs (:func:`lay_rugs`: "rubber mats
 on the floor") go one after the other, each clear of those before it: under the main piece,
-in the middle, then under the other pieces, biggest first. A rug is shifted towards the room's
-centre, then scaled down (to at most :data:`MIN_SCALE`), until it lies inside the room with
-:data:`WALL_MARGIN_M` to spare; otherwise it is not placed, with the reason.
+in the middle, then under the other pieces, biggest first, then anywhere on the floor. A rug
+is shifted towards the room's centre, then scaled down (to at most :data:`MIN_SCALE`), until it
+lies inside the room with :data:`WALL_MARGIN_M` to spare; otherwise it is not placed, with the
+reason.
 """
 
 from __future__ import annotations
@@ -55,13 +56,15 @@ def lay_rug(
     size: tuple[float, float],
     anchors: Sequence[Anchor],
     avoid: Sequence[Polygon] = (),
+    middle: bool = True,
 ) -> RugPose | str:
     """The pose of a rug of ``size`` (depth along its x, width along its y) in ``room``, or
     why it does not fit.
 
     Spots are tried in order: under the main piece (the first of :data:`ANCHOR_CATEGORIES`),
-    the room's middle, then under every other piece, biggest first; a rug must not lie on the
-    rugs of ``avoid`` (those laid before it)."""
+    the room's middle (unless not ``middle``), then under every other piece, biggest first; a
+    rug must not lie on the rugs of ``avoid`` (those laid before it), and when none of these
+    spots is clear of them, any spot of the floor will do."""
     main = [a for c in ANCHOR_CATEGORIES for a in anchors if a.category == c]
     rest = sorted(
         (a for a in anchors if a not in main), key=lambda a: a.width * a.depth, reverse=True
@@ -69,10 +72,14 @@ def lay_rug(
     inner = room.buffer(-WALL_MARGIN_M, join_style="mitre")
     if inner.is_empty:
         return "the room is too small for a rug"
-    for anchor in [*main[:1], None, *main[1:], *rest]:
+    centre: list[Anchor | None] = [None] if middle else []
+    for anchor in [*main[:1], *centre, *main[1:], *rest]:
         pose = _fit(room, inner, size, anchor, avoid)
         if pose is not None:
             return pose
+    pose = _anywhere(inner, size, avoid)
+    if pose is not None:
+        return pose
     if avoid:
         return f"no free floor for another {size[1]:.2f} x {size[0]:.2f} m rug"
     return (
@@ -84,11 +91,12 @@ def lay_rug(
 def lay_rugs(
     room: Polygon, sizes: Sequence[tuple[float, float]], anchors: Sequence[Anchor]
 ) -> list[RugPose | str]:
-    """Poses of several rugs, one after the other (:func:`lay_rug`), none on another."""
+    """Poses of several rugs, one after the other (:func:`lay_rug`), none on another; several
+    rugs go under the pieces rather than one in the middle taking the floor from the rest."""
     laid: list[Polygon] = []
     out: list[RugPose | str] = []
     for size in sizes:
-        pose = lay_rug(room, size, anchors, laid)
+        pose = lay_rug(room, size, anchors, laid, middle=len(sizes) == 1)
         if isinstance(pose, RugPose):
             laid.append(_footprint(pose.x, pose.y, pose.yaw_deg, size, pose.scale))
         out.append(pose)
@@ -121,6 +129,31 @@ def _fit(
                 footprint.intersection(other).area > 1e-6 for other in avoid
             ):
                 return RugPose(round(cx, 4), round(cy, 4), yaw, round(scale, 3))
+        scale -= 0.1
+    return None
+
+
+GRID_STEP_M = 0.25  # spots tried for a rug that fits under no piece clear of the others
+
+
+def _anywhere(
+    inner: Polygon, size: tuple[float, float], avoid: Sequence[Polygon]
+) -> RugPose | None:
+    """The largest rug (down to :data:`MIN_SCALE`) on any spot of a grid over the room, clear
+    of ``avoid``: the first spot found, largest scale first."""
+    xmin, ymin, xmax, ymax = inner.bounds
+    xs = [xmin + GRID_STEP_M * (i + 0.5) for i in range(int((xmax - xmin) / GRID_STEP_M))]
+    ys = [ymin + GRID_STEP_M * (j + 0.5) for j in range(int((ymax - ymin) / GRID_STEP_M))]
+    scale = 1.0
+    while scale >= MIN_SCALE - 1e-9:
+        for yaw in (0.0, 90.0):
+            for x in xs:
+                for y in ys:
+                    footprint = _footprint(x, y, yaw, size, scale)
+                    if footprint.within(inner) and not any(
+                        footprint.intersection(other).area > 1e-6 for other in avoid
+                    ):
+                        return RugPose(round(x, 4), round(y, 4), yaw, round(scale, 3))
         scale -= 0.1
     return None
 

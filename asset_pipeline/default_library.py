@@ -14,6 +14,7 @@ from asset_pipeline.library_writer import (
     add_assets,
     library_lock,
     remove_assets,
+    write_library,
 )
 from holomj.library.location import default_library_root
 from holomj.library.store import AssetLibrary
@@ -25,26 +26,40 @@ PROCEDURAL_SOURCE = "holomj procedural"
 STALE_SOURCES = frozenset({PROCEDURAL_SOURCE, "holomj synthesised", "holomj proxy"})
 
 
-def ensure_default_library(root: Path | None = None, *, force: bool = False) -> Path:
+ARTICULATED_BY_DEFAULT = False
+"""The one-line switch to articulated furniture: when True, the default library is built as its
+articulated variant (:func:`asset_pipeline.procedural.articulated.library_assets`: cabinets,
+wardrobes, dressers, appliances... with doors, drawers and lids on real joints) and retrieval
+picks those for every scene. Off for now: ``generate`` makes exactly what it made before."""
+
+
+def ensure_default_library(
+    root: Path | None = None, *, force: bool = False, articulated: bool | None = None
+) -> Path:
     """Make sure the library at ``root`` (default location if None) holds the current
     procedural assets, building or refreshing them if needed; returns the library root.
 
     User-imported assets in the same library are kept. ``force`` rebuilds the procedural
-    assets even when they are current.
+    assets even when they are current. ``articulated`` (default
+    :data:`ARTICULATED_BY_DEFAULT`) builds the articulated variant instead; switching either
+    way refreshes the library (the version marker differs).
     """
-    from asset_pipeline.procedural import (
-        DEFAULT_LIBRARY_VERSION,
-        build_default_library,
-        default_assets,
-    )
+    from asset_pipeline.procedural import DEFAULT_LIBRARY_NAME
+
+    if ARTICULATED_BY_DEFAULT if articulated is None else articulated:
+        from asset_pipeline.procedural.articulated import ARTICULATED_VERSION as version
+        from asset_pipeline.procedural.articulated import library_assets as bundles_of
+    else:
+        from asset_pipeline.procedural import DEFAULT_LIBRARY_VERSION as version
+        from asset_pipeline.procedural import default_assets as bundles_of
 
     root = Path(root) if root is not None else default_library_root()
     with library_lock(root):
         marker = root / VERSION_FILE
         if not (root / INDEX_FILE).is_file():
-            build_default_library(root, overwrite=True)
-        elif force or not marker.is_file() or marker.read_text().strip() != DEFAULT_LIBRARY_VERSION:
-            bundles = default_assets()
+            write_library(root, DEFAULT_LIBRARY_NAME, bundles_of(), overwrite=True)
+        elif force or not marker.is_file() or marker.read_text().strip() != version:
+            bundles = bundles_of()
             fresh = {b.meta.id for b in bundles}
             library = AssetLibrary.open(root)
             stale = [
@@ -59,5 +74,5 @@ def ensure_default_library(root: Path | None = None, *, force: bool = False) -> 
             add_assets(root, bundles)
         else:
             return root
-        marker.write_text(DEFAULT_LIBRARY_VERSION + "\n")
+        marker.write_text(version + "\n")
     return root

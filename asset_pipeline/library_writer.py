@@ -329,9 +329,7 @@ def _checked_bundles(bundles: Iterable[AssetBundle], existing: dict[str, str]) -
 
 
 def _named_files(meta: AssetMeta) -> list[str]:
-    files = [p.mesh for p in meta.visual] + [p.texture for p in meta.visual if p.texture]
-    files += [c.mesh for c in meta.collision if c.mesh] + list(meta.thumbnails)
-    return files
+    return meta.files()  # moving parts' meshes included
 
 
 def _safe_relpath(rel: str, where: str) -> str:

@@ -5,14 +5,27 @@ All poses are world frame at the scene's initial state (metres, quaternions w, x
     schema_version, scene, rooms [{id, type, area_m2, polygon}],
     objects [{id, category, proxy, asset, room, static, position, quat, yaw_deg, scale, mass_kg,
               aabb {min, max}, support, surfaces [{index, height, polygon, area_m2}],
-              body, joint}],
+              body, joint,
+              joints [{name, part, kind, type, axis, anchor, range, value, closed, body,
+                       handle {site, position, quat, pull} | null}],
+              interior_surfaces [{index, part, body, behind, height, polygon, area_m2,
+                                  clearance_m}]}],
     doors [{id, kind, rooms, position, width, leaves [{body, joint, range_rad, hinge, axis}]}],
     robot {name, spec, position, yaw_deg, room, base_body, joints [{name, range}],
            actuators} | null
 
 ``support`` is the object a small object was dropped on (``null``: the floor); ``surfaces`` are
 an object's receptacle surfaces (tops, shelves) where others may be put; ``aabb`` bounds every
-geom of the object, visual ones included. Objects keep the scene's order.
+geom of the object (its moving parts too), visual ones included. Objects keep the scene's order.
+
+Articulated objects (doors, drawers, lids: :mod:`holomj.mjcf.articulation`) list their
+``joints``: the joint's name, the moving part and its kind, ``hinge`` (values in radians) or
+``slide`` (metres), the world axis and anchor, the range, the current ``value`` and the
+``closed`` one (positive values open), the ``body`` to grasp and the ``handle``: the site at the
+grasp point, its world position and orientation (x axis: the direction to pull to open, z axis:
+along the grip) and that pull direction. ``interior_surfaces`` are the surfaces inside (a shelf
+behind a door, a drawer bottom) at the current pose, with the part they move with (null: the
+carcass), its body and the joints to open to reach them. Both lists are empty for rigid objects.
 """
 
 from __future__ import annotations
@@ -77,7 +90,13 @@ def _object(compiled: CompiledScene, data: mujoco.MjData, obj: Any) -> dict[str,
             }
             for s in world_surfaces(obj, meta)
         ]
-    low, high = _aabb(model, data, body)
+    parts = ()
+    if meta is not None and meta.articulation is not None:
+        parts = tuple(
+            model.body(names.object_part_body(obj.id, p.name)).id for p in meta.articulation.parts
+        )
+    low, high = _aabb(model, data, body, parts)
+    joints, interior = _articulation(compiled, data, obj, meta)
     return {
         "id": obj.id,
         "category": meta.category if meta is not None else None,
@@ -95,11 +114,86 @@ def _object(compiled: CompiledScene, data: mujoco.MjData, obj: Any) -> dict[str,
         "surfaces": surfaces,
         "body": model.body(body).name,
         "joint": model.joint(joint).name if joint >= 0 else None,
+        "joints": joints,
+        "interior_surfaces": interior,
     }
 
 
-def _aabb(model: mujoco.MjModel, data: mujoco.MjData, body: int) -> tuple[np.ndarray, np.ndarray]:
-    geoms = range(model.body_geomadr[body], model.body_geomadr[body] + model.body_geomnum[body])
+def _articulation(
+    compiled: CompiledScene, data: mujoco.MjData, obj: Any, meta: Any
+) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
+    """The joints and interior surfaces of an articulated object (empty lists otherwise)."""
+    if meta is None or meta.articulation is None:
+        return [], []
+    model = compiled.model
+    joints = []
+    for part in meta.articulation.parts:
+        body = model.body(names.object_part_body(obj.id, part.name)).id
+        joint = model.joint(names.object_part_joint(obj.id, part.joint.name)).id
+        handle = None
+        if part.handle is not None:
+            site = model.site(names.object_part_handle(obj.id, part.name)).id
+            quat = np.zeros(4)
+            mujoco.mju_mat2Quat(quat, data.site_xmat[site])
+            handle = {
+                "site": model.site(site).name,
+                "position": _vec(data.site_xpos[site]),
+                "quat": _vec(quat),
+                "pull": _vec(data.site_xmat[site].reshape(3, 3)[:, 0]),
+            }
+        adr = model.jnt_qposadr[joint]
+        joints.append(
+            {
+                "name": model.joint(joint).name,
+                "part": part.name,
+                "kind": part.kind,
+                "type": part.joint.type,
+                "axis": _vec(data.xaxis[joint]),
+                "anchor": _vec(data.xanchor[joint]),
+                "range": _vec(model.jnt_range[joint]),
+                "value": _r(float(data.qpos[adr])),
+                "closed": _r(float(model.qpos0[adr])),
+                "body": model.body(body).name,
+                "handle": handle,
+            }
+        )
+    interior = []
+    scale = np.asarray(obj.scale3, dtype=float)
+    carcass = model.body(names.object_body(obj.id)).id
+    for index, surface in enumerate(meta.articulation.interior):
+        on = carcass
+        if surface.part is not None:
+            on = model.body(names.object_part_body(obj.id, surface.part)).id
+        rot = data.xmat[on].reshape(3, 3)
+        local = [
+            (x * scale[0], y * scale[1], surface.height * scale[2]) for x, y in surface.polygon
+        ]
+        world = [data.xpos[on] + rot @ np.asarray(p) for p in local]
+        interior.append(
+            {
+                "index": index,
+                "part": surface.part,
+                "body": model.body(on).name,
+                "behind": [names.object_part_joint(obj.id, j) for j in surface.behind],
+                "height": _r(float(np.mean([p[2] for p in world]))),
+                "polygon": [[_r(p[0]), _r(p[1])] for p in world],
+                "area_m2": _r(surface.area_m2 * scale[0] * scale[1]),
+                "clearance_m": (
+                    _r(surface.clearance_m * scale[2]) if surface.clearance_m is not None else None
+                ),
+            }
+        )
+    return joints, interior
+
+
+def _aabb(
+    model: mujoco.MjModel, data: mujoco.MjData, body: int, parts: tuple[int, ...] = ()
+) -> tuple[np.ndarray, np.ndarray]:
+    geoms = [
+        g
+        for b in (body, *parts)
+        for g in range(model.body_geomadr[b], model.body_geomadr[b] + model.body_geomnum[b])
+    ]
     points = [shapes.world_points(model, data, g) for g in geoms]
     if not points:
         return data.xpos[body].copy(), data.xpos[body].copy()

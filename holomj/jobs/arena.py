@@ -25,6 +25,7 @@ from dm_control import composer, mjcf
 from dm_control.mjcf import constants
 
 from holomj.errors import FormatError
+from holomj.export.objects_json import OBJECTS_JSON
 from holomj.jobs.folder import SCENE_XML, read_robot, read_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.mjcf.loading import load_model_file
@@ -32,6 +33,7 @@ from holomj.robots.occupancy import build_floor_grid
 from holomj.robots.placement import DEFAULT_CLEARANCE_M, Spot, choose_spot
 from holomj.robots.reach import compute_reach
 from holomj.seeds import seed_rng
+from holomj.spec.base import read_json
 from holomj.spec.robot import Footprint, RobotRecord
 from holomj.spec.scene import SceneSpec
 
@@ -117,6 +119,30 @@ class HolomjArena(composer.Arena):
             clearance=clearance,
             room=room,
         )
+
+    def articulations(self) -> list[dict[str, Any]]:
+        """The joints of the scene's moving parts (doors, drawers, lids of articulated objects),
+        as ``objects.json`` lists them (name, type, axis, range, closed value, the body to grasp
+        and the handle's pose), each with its ``object`` id and its dm_control elements:
+        ``joint_element``, ``body_element`` and ``handle_element`` (the handle site, or None),
+        ready for ``physics.bind``. Empty when the scene has none."""
+        path = self._folder / OBJECTS_JSON
+        if not path.is_file():
+            return []
+        found = []
+        for obj in read_json(path).get("objects", []):
+            for joint in obj.get("joints", []):
+                handle = joint.get("handle")
+                found.append(
+                    {
+                        **joint,
+                        "object": obj["id"],
+                        "joint_element": self.find("joint", joint["name"]),
+                        "body_element": self.find("body", joint["body"]),
+                        "handle_element": self.find("site", handle["site"]) if handle else None,
+                    }
+                )
+        return found
 
     def attach_at(self, entity: composer.Entity, spot: Spot) -> Any:
         """Attach ``entity`` (fixed base) at ``spot``; returns its attachment frame."""

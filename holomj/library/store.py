@@ -152,8 +152,7 @@ def _load_asset(folder: Path, asset_id: str) -> LibraryAsset:
             f"asset id {meta.id!r} differs from the index entry {asset_id!r}", where=str(meta_path)
         )
     asset = LibraryAsset(meta=meta, root=folder)
-    files = [p.mesh for p in meta.visual] + [p.texture for p in meta.visual if p.texture]
-    files += [c.mesh for c in meta.collision if c.mesh]
+    files = [f for f in meta.files() if f not in meta.thumbnails]  # moving parts' too
     for rel in files:
         if not asset.path(rel).is_file():
             raise SpecError(f"file {rel!r} named in the metadata is missing", where=str(meta_path))

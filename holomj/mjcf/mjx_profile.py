@@ -17,6 +17,11 @@ Limits of MJX-JAX in MuJoCo 3.17 (``doc/mjx.rst``, "Feature Parity" and "Sharp B
 - No broad phase: MJX-JAX evaluates every pair of colliders that may touch and reserves
   constraint rows for all their contacts; the custom numerics ``max_geom_pairs`` and
   ``max_contact_points`` (ignored by C MuJoCo) cap them, growing with the moving bodies.
+- Articulated objects (doors, drawers, lids on hinge and slide joints, :mod:`.articulation`)
+  need nothing MJX lacks: limited hinge and slide joints with damping, friction loss, armature
+  and springs, excluded body pairs and handle sites are all MJX features, and their colliders
+  get the conversions above (a washing machine's round door is a cylinder). Each moving part is
+  a moving body for the broad-phase caps below.
 - Not convertible, so rejected with a one-line error naming the element: flex, SDF geoms,
   actuators with other transmissions, dynamics, gains or biases than MJX's, equality constraints
   other than connect/weld/joint/tendon, plugin sensors and contact sensors matching sites,

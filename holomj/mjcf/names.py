@@ -155,3 +155,49 @@ def room_camera(room_id: str) -> str:
 
 
 OVERVIEW_CAMERA = "camera/overview"
+
+
+# --- articulated objects (doors, drawers, lids of furniture and appliances) ------------------
+def object_part_body(object_id: str, part: str) -> str:
+    """The body of a moving part (door, drawer, lid) of an articulated object."""
+    return f"{object_id}/{part}"
+
+
+def object_part_joint(object_id: str, joint: str) -> str:
+    """The hinge or slide joint of a moving part of an articulated object."""
+    return f"{object_id}/{joint}"
+
+
+def object_part_visual(object_id: str, part: str, index: int) -> str:
+    """The ``index``-th visual geom of a moving part."""
+    return f"{object_id}/{part}/visual_{index}"
+
+
+def object_part_collision(object_id: str, part: str, index: int) -> str:
+    """The ``index``-th collision geom of a moving part."""
+    return f"{object_id}/{part}/collision_{index}"
+
+
+def object_part_handle(object_id: str, part: str) -> str:
+    """The site at the grasp pose of a moving part's handle."""
+    return f"{object_id}/{part}/handle"
+
+
+def asset_part_visual_mesh(prefix: str, part: str, index: int) -> str:
+    """A visual mesh of a moving part of an asset at one scale."""
+    return f"{prefix}/{part}/visual_{index}"
+
+
+def asset_part_collision_mesh(prefix: str, part: str, index: int) -> str:
+    """A collision hull mesh of a moving part of an asset at one scale."""
+    return f"{prefix}/{part}/collision_{index}"
+
+
+def asset_part_material(asset_id: str, part: str, index: int) -> str:
+    """The material of a moving part's ``index``-th visual part."""
+    return f"asset/{asset_id}/{part}/material_{index}"
+
+
+def asset_part_texture(asset_id: str, part: str, index: int) -> str:
+    """The texture of a moving part's ``index``-th visual part."""
+    return f"asset/{asset_id}/{part}/texture_{index}"

@@ -6,12 +6,16 @@ their recorded volumes and given to MuJoCo as each collider's ``mass``, so the b
 that while MuJoCo derives the inertia from the collision geometry; visual geoms have none.
 Non-uniform scale is exact for meshes and for primitives aligned with the asset axes; rotated
 round primitives get the scale their axes see, which is a close approximation.
+
+An articulated asset (one with ``articulation``) is its carcass here, weighing the asset's mass
+less its moving parts'; the parts (doors, drawers, lids) become child bodies on hinge and slide
+joints (:mod:`holomj.mjcf.articulation`).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Literal
 
 import mujoco
@@ -22,7 +26,7 @@ from holomj.library.store import AssetLibrary, LibraryAsset
 from holomj.mjcf import names
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean, yaw_quat
-from holomj.spec.assets import AssetMeta, CollisionPart
+from holomj.spec.assets import ArticulatedPart, AssetMeta, CollisionPart
 from holomj.spec.decor import DECOR_CATEGORIES, DECOR_GROUP, LIGHT_FIXTURE_CATEGORIES
 from holomj.spec.scene import SceneObject
 
@@ -36,11 +40,13 @@ _PRIMITIVES = {
 
 @dataclass(frozen=True)
 class _AssetHandles:
-    """MJCF names of one asset's meshes and materials at one scale."""
+    """MJCF names of one asset's meshes and materials at one scale (for an articulated asset,
+    those of its carcass, and per moving part its own in ``parts``)."""
 
     visual_meshes: list[str]
     visual_materials: list[str]
     collision_meshes: dict[int, str]
+    parts: dict[str, _AssetHandles] = field(default_factory=dict)
 
 
 Furniture = Literal["as-is", "static", "free"]
@@ -112,6 +118,9 @@ class ObjectBuilder:
             geom.info = f"visual {k} of object {obj.id}"
         volume_factor = scale[0] * scale[1] * scale[2]
         mass = obj.mass_kg if obj.mass_kg is not None else meta.mass * volume_factor
+        whole = mass
+        if meta.articulation is not None:  # the carcass: what the moving parts leave
+            mass *= 1.0 - meta.articulation.mass_kg / meta.mass
         total_volume = meta.collision_volume_m3
         default = "collision" if static else "prop"
         torsion, rolling = (0.005, 0.0001) if static else (0.01, 0.001)
@@ -122,11 +131,15 @@ class ObjectBuilder:
                 default=self.ctx.default(default),
                 mass=mass * part.volume_m3 / total_volume,
                 friction=[meta.friction, torsion, rolling],
-                **_collider_fields(part, scale, handles.collision_meshes.get(k)),
+                **collider_fields(part, scale, handles.collision_meshes.get(k)),
             )
             geom.info = f"collider {k} of object {obj.id}"
             if decor:
                 geom.contype, geom.conaffinity, geom.group = 0, 0, DECOR_GROUP
+        if meta.articulation is not None:
+            from holomj.mjcf.articulation import add_moving_parts
+
+            add_moving_parts(self.ctx, body, obj, meta, handles.parts, scale, whole)
         return body
 
     def _asset_handles(
@@ -161,11 +174,70 @@ class ObjectBuilder:
             )
             mesh.info = f"collision hull {part.mesh} of asset {meta.id}"
             collision_meshes[k] = mesh.name
+        parts = {}
+        for part in meta.articulation.parts if meta.articulation is not None else ():
+            parts[part.name] = self._part_handles(asset, folder, prefix, part, scale)
         handles = _AssetHandles(
-            visual_meshes, self._asset_materials(asset, folder), collision_meshes
+            visual_meshes, self._asset_materials(asset, folder), collision_meshes, parts
         )
         self._handles[key] = handles
         return handles
+
+    def _part_handles(
+        self,
+        asset: LibraryAsset,
+        folder: str,
+        prefix: str,
+        part: ArticulatedPart,
+        scale: tuple[float, float, float],
+    ) -> _AssetHandles:
+        """Meshes and materials of one moving part of an articulated asset."""
+        meta = asset.meta
+        visual_meshes = []
+        for k, visual in enumerate(part.visual):
+            mesh = self.ctx.spec.add_mesh(
+                name=names.asset_part_visual_mesh(prefix, part.name, k),
+                file=self._register(asset, folder, visual.mesh),
+                scale=list(scale),
+                inertia=mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL,
+            )
+            mesh.info = f"visual mesh {visual.mesh} of part {part.name} of asset {meta.id}"
+            visual_meshes.append(mesh.name)
+        collision_meshes = {}
+        for k, collider in enumerate(part.collision):
+            if collider.kind != "mesh" or collider.mesh is None:
+                continue
+            mesh = self.ctx.spec.add_mesh(
+                name=names.asset_part_collision_mesh(prefix, part.name, k),
+                file=self._register(asset, folder, collider.mesh),
+                scale=list(scale),
+                inertia=mujoco.mjtMeshInertia.mjMESH_INERTIA_CONVEX,
+                maxhullvert=meta.maxhullvert,
+            )
+            mesh.info = f"collision hull {collider.mesh} of part {part.name} of asset {meta.id}"
+            collision_meshes[k] = mesh.name
+        key = f"{meta.id}\0{part.name}"
+        if key not in self._materials:
+            materials = []
+            for k, visual in enumerate(part.visual):
+                name = names.asset_part_material(meta.id, part.name, k)
+                material = self.ctx.spec.add_material(
+                    name=name,
+                    rgba=list(visual.rgba),
+                    specular=visual.specular,
+                    shininess=visual.shininess,
+                )
+                if visual.texture is not None:
+                    texture = names.asset_part_texture(meta.id, part.name, k)
+                    self.ctx.spec.add_texture(
+                        name=texture,
+                        type=mujoco.mjtTexture.mjTEXTURE_2D,
+                        file=self._register(asset, folder, visual.texture),
+                    )
+                    material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = texture
+                materials.append(name)
+            self._materials[key] = materials
+        return _AssetHandles(visual_meshes, self._materials[key], collision_meshes)
 
     def _asset_materials(self, asset: LibraryAsset, folder: str) -> list[str]:
         meta = asset.meta
@@ -196,7 +268,7 @@ class ObjectBuilder:
         return self.ctx.add_file(f"{folder}/{relative}", asset.path(relative).read_bytes())
 
 
-def _collider_fields(
+def collider_fields(
     part: CollisionPart, scale: tuple[float, float, float], mesh_name: str | None
 ) -> dict[str, object]:
     """MjsGeom fields (type, size, pos, quat, mesh) of a collider at a given scale."""

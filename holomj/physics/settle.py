@@ -14,6 +14,12 @@ Positions are those of each object body's centre of mass (``xipos``), so the ver
 depend on where the body frame sits (a footed pole that topples ends 90° from its authored pose
 with its centre of mass half its height lower, although its frame may not have moved).
 
+Moving parts of articulated objects (the hinge and slide joints of bodies below an object's
+body: doors, drawers, lids) count too: settling waits for them to be at rest as well (the same
+speed thresholds, per radian or metre), and an object whose part ends more than
+``part_rotation_deg`` (hinges) or ``part_travel_m`` (slides) from its authored joint value is
+unstable, the reason naming the part ("door_0_hinge swung 35.2° from its authored angle").
+
 MuJoCo 3.17's sleeping islands (``mjENBL_SLEEP``) are off by default: a sleeping body cannot
 drift, so creep slower than ``sleep_tolerance`` would go unseen, and the scene's own options
 are the ones its users simulate with. ``sleep=True`` turns them on for big scenes: 780 objects
@@ -39,6 +45,55 @@ FIXED = "fixed"
 _CHECK_EVERY = 10  # steps between rest checks while settling
 
 
+@dataclass(frozen=True)
+class PartJoints:
+    """The hinge and slide joints of the objects' moving parts (doors, drawers, lids)."""
+
+    owner: np.ndarray  # object index per joint
+    joint: np.ndarray  # joint id
+    qpos: np.ndarray  # qpos address
+    dof: np.ndarray  # dof address
+    hinge: np.ndarray  # bool: hinge (radians) or slide (metres)
+
+    @classmethod
+    def of(cls, model: mujoco.MjModel, owners: GeomOwners) -> PartJoints:
+        kinds = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
+        roots = set(owners.object_bodies.tolist())
+        joints = [
+            j
+            for j in range(model.njnt)
+            if int(model.jnt_type[j]) in kinds
+            and owners.body_owner[model.jnt_bodyid[j]] >= 0
+            and int(model.jnt_bodyid[j]) not in roots
+        ]
+        ids = np.array(joints, dtype=int)
+        return cls(
+            owner=owners.body_owner[model.jnt_bodyid[ids]] if ids.size else ids,
+            joint=ids,
+            qpos=model.jnt_qposadr[ids] if ids.size else ids,
+            dof=model.jnt_dofadr[ids] if ids.size else ids,
+            hinge=(model.jnt_type[ids] == int(mujoco.mjtJoint.mjJNT_HINGE))
+            if ids.size
+            else np.zeros(0, dtype=bool),
+        )
+
+    def __len__(self) -> int:
+        return int(self.joint.size)
+
+    def at_rest(self, data: mujoco.MjData, th: Thresholds) -> bool:
+        """Every part slower than the rest thresholds (rad/s for hinges, m/s for slides)."""
+        if not len(self):
+            return True
+        speed = np.abs(data.qvel[self.dof])
+        limit = np.where(self.hinge, th.rest_angular_rps, th.rest_linear_mps)
+        return bool(np.all(speed < limit))
+
+    def departures(self, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+        """How far each joint ends from its start: degrees for hinges, metres for slides."""
+        delta = np.abs(end[self.qpos] - start[self.qpos])
+        return np.where(self.hinge, np.degrees(delta), delta)
+
+
 @dataclass
 class ObjectTrack:
     """Index arrays of the objects' bodies and (for free bodies) their velocity dofs."""
@@ -47,6 +102,7 @@ class ObjectTrack:
     dynamic: np.ndarray  # bool per object
     lin_dofs: np.ndarray  # (n_dynamic, 3)
     ang_dofs: np.ndarray  # (n_dynamic, 3)
+    parts: PartJoints | None = None  # the moving parts' joints
 
     @classmethod
     def of(cls, model: mujoco.MjModel, objects: dict[str, int]) -> ObjectTrack:
@@ -60,7 +116,7 @@ class ObjectTrack:
         adr = np.array([free_dof[int(b)] for b in bodies[dynamic]], dtype=int)
         lin = adr[:, None] + np.arange(3) if adr.size else np.zeros((0, 3), dtype=int)
         ang = adr[:, None] + np.arange(3, 6) if adr.size else np.zeros((0, 3), dtype=int)
-        return cls(owners, dynamic, lin, ang)
+        return cls(owners, dynamic, lin, ang, PartJoints.of(model, owners))
 
     def speeds(self, data: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
         """Linear (m/s) and angular (rad/s) speed of each free object."""
@@ -83,6 +139,7 @@ class SettleResult:
     data: mujoco.MjData
     start_pos: np.ndarray  # object centres of mass at t = 0 (the authored pose)
     start_quat: np.ndarray  # object body orientations at t = 0
+    start_qpos: np.ndarray  # joint values at t = 0 (the moving parts' authored values)
     monitor_pos: np.ndarray  # centres of mass at the start of the monitor window
     monitor_quat: np.ndarray
     path: np.ndarray  # path length of the centre of mass over the monitor window
@@ -147,10 +204,12 @@ def _run_settle(model: mujoco.MjModel, track: ObjectTrack, th: Thresholds) -> Se
     bodies = track.owners.object_bodies
     start_pos = data.xipos[bodies].copy()
     start_quat = data.xquat[bodies].copy()
+    start_qpos = data.qpos.copy()
+    parts = track.parts
     dt = model.opt.timestep
     cap_steps = round(th.settle_cap_s / dt)
     window_steps = max(1, round(th.rest_window_s / dt))
-    quiet_since = 0 if not track.dynamic.any() else None
+    quiet_since = 0 if not track.dynamic.any() and not parts else None
     steps = 0
     while steps < cap_steps:
         if quiet_since is not None and steps - quiet_since >= window_steps:
@@ -158,7 +217,7 @@ def _run_settle(model: mujoco.MjModel, track: ObjectTrack, th: Thresholds) -> Se
         for _ in range(min(_CHECK_EVERY, cap_steps - steps)):
             mujoco.mj_step(model, data)
         steps += min(_CHECK_EVERY, cap_steps - steps)
-        if track.at_rest(data, th).all():
+        if track.at_rest(data, th).all() and (parts is None or parts.at_rest(data, th)):
             quiet_since = steps if quiet_since is None else quiet_since
         else:
             quiet_since = None
@@ -182,6 +241,7 @@ def _run_settle(model: mujoco.MjModel, track: ObjectTrack, th: Thresholds) -> Se
         data=data,
         start_pos=start_pos,
         start_quat=start_quat,
+        start_qpos=start_qpos,
         monitor_pos=monitor_pos,
         monitor_quat=monitor_quat,
         path=path,
@@ -294,6 +354,7 @@ def judge(
         for i, name in enumerate(owners.names):
             room = scene_objects[name].room if name in scene_objects else None
             inside[name] = bool(rooms.inside(end_pos[i : i + 1, :2], room)[0])
+    motion = _part_motion(model, track.parts, result.start_qpos, data.qpos, len(bodies))
     reports = []
     for i, name in enumerate(owners.names):
         dynamic = bool(track.dynamic[i])
@@ -332,6 +393,14 @@ def judge(
             reasons.append(f"rests on {support or 'nothing'}, expected {expected}")
         if dynamic and result.warnings:
             reasons.append("MuJoCo warnings: " + ", ".join(sorted(result.warnings)))
+        # (d) moving parts where they were authored
+        for joint, (value, hinge) in motion[i].items():
+            if hinge and value >= th.part_rotation_deg:
+                reasons.append(f"{joint} swung {value:.1f}° from its authored angle by itself")
+            elif not hinge and value >= th.part_travel_m:
+                reasons.append(
+                    f"{joint} slid {value * 1000:.1f} mm from its authored position by itself"
+                )
         reports.append(
             ObjectReport(
                 name=name,
@@ -350,10 +419,32 @@ def judge(
                 penetration_m=_r(penetration[i]),
                 contact_depth_m=_r(result.penetration[i]),
                 at_rest=bool(at_rest[i]),
+                part_motion={j: _r(v, 4 if h else 6) for j, (v, h) in motion[i].items()},
                 reasons=reasons,
             )
         )
     return reports
+
+
+def _part_motion(
+    model: mujoco.MjModel,
+    parts: PartJoints | None,
+    start: np.ndarray,
+    end: np.ndarray,
+    count: int,
+) -> list[dict[str, tuple[float, bool]]]:
+    """Per object: joint name (without the object's prefix) -> (departure from the authored
+    value in degrees or metres, hinge?)."""
+    motion: list[dict[str, tuple[float, bool]]] = [{} for _ in range(count)]
+    if parts is None or not len(parts):
+        return motion
+    for owner, joint, value, hinge in zip(
+        parts.owner, parts.joint, parts.departures(start, end), parts.hinge, strict=True
+    ):
+        name = model.joint(int(joint)).name
+        name = name.split("/", 1)[1] if "/" in name else name
+        motion[int(owner)][name] = (float(value), bool(hinge))
+    return motion
 
 
 def _r(value: float, digits: int = 6) -> float:

@@ -12,9 +12,9 @@ Asset frame: metres, Z up, origin at the centre of the footprint at the bottom, 
 from __future__ import annotations
 
 import math
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
-from pydantic import AfterValidator, Field, model_validator
+from pydantic import AfterValidator, Field, model_serializer, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat, Rgba, Vec2, Vec3, Vec4
 
@@ -80,6 +80,152 @@ class SupportSurface(FrozenModel):
     area_m2: Annotated[float, Field(gt=0.0)]
 
 
+# --- articulation ----------------------------------------------------------------------------
+JointType = Literal["hinge", "slide"]
+PartKind = Literal["door", "drawer", "lid", "seat", "rack", "flap"]
+ArticulationName = Annotated[str, Field(min_length=1, max_length=64, pattern=r"^[A-Za-z0-9_]+$")]
+NonNegative = Annotated[float, Field(ge=0.0)]
+
+
+def _unit(vector: tuple[float, float, float], what: str) -> tuple[float, float, float]:
+    length = math.sqrt(sum(v * v for v in vector))
+    if length < 1e-9:
+        raise ValueError(f"{what} has zero length")
+    return (vector[0] / length, vector[1] / length, vector[2] / length)
+
+
+class ArticulationJoint(FrozenModel):
+    """The joint that moves one part of an articulated asset, in the asset frame.
+
+    ``hinge``: rotation about ``axis`` through ``anchor``, values in radians; ``slide``:
+    translation along ``axis``, values in metres (``anchor`` is a point of the part). Positive
+    values open. The part's geometry is given at the value ``closed`` (the model's default
+    pose, ``qpos0``). ``stiffness`` and ``springref`` make a spring (a counterbalance: an oven
+    door's, a chest lid's), ``damping``, ``frictionloss`` and ``armature`` as MuJoCo's.
+    """
+
+    name: ArticulationName
+    type: JointType
+    axis: Vec3
+    anchor: Vec3 = (0.0, 0.0, 0.0)
+    range: tuple[float, float]
+    closed: float = 0.0
+    damping: NonNegative = 0.0
+    frictionloss: NonNegative = 0.0
+    armature: NonNegative = 0.0
+    stiffness: NonNegative = 0.0
+    springref: float = 0.0
+
+    @model_validator(mode="after")
+    def _limits(self) -> ArticulationJoint:
+        object.__setattr__(self, "axis", _unit(self.axis, "axis"))
+        low, high = self.range
+        if not low < high:
+            raise ValueError(f"range {self.range} must be (low, high) with low < high")
+        if not low - 1e-9 <= self.closed <= high + 1e-9:
+            raise ValueError(f"closed value {self.closed} lies outside the range {self.range}")
+        if self.type == "hinge" and max(abs(low), abs(high)) > 2 * math.pi:
+            raise ValueError("a hinge range is in radians and within one turn")
+        return self
+
+
+class Handle(FrozenModel):
+    """Where a hand grasps a moving part, in the asset frame at the closed pose.
+
+    ``pos`` is the middle of the grip; the grasp frame ``quat`` has its x axis along ``pull``
+    (the direction a hand pulls to open, away from the front) and its z axis along the grip
+    (a bar's long axis). ``length_m`` is the grip's length.
+    """
+
+    pos: Vec3
+    quat: Vec4 = (1.0, 0.0, 0.0, 0.0)
+    pull: Vec3 = (1.0, 0.0, 0.0)
+    length_m: NonNegative = 0.0
+
+    @model_validator(mode="after")
+    def _unit_pull(self) -> Handle:
+        object.__setattr__(self, "pull", _unit(self.pull, "pull"))
+        if math.sqrt(sum(q * q for q in self.quat)) < 1e-9:
+            raise ValueError("quaternion has zero length")
+        return self
+
+
+class ArticulatedPart(FrozenModel):
+    """A moving part (door, drawer, lid, ...): its own body, joined to ``parent`` (None: the
+    asset's carcass, else an earlier part) by ``joint``. Its ``visual`` and ``collision`` are
+    given in the asset frame at the closed pose; ``mass_kg`` is its share of the asset's mass."""
+
+    name: ArticulationName
+    kind: PartKind
+    parent: ArticulationName | None = None
+    joint: ArticulationJoint
+    mass_kg: PositiveFloat
+    visual: list[VisualPart] = Field(min_length=1)
+    collision: list[CollisionPart] = Field(min_length=1)
+    handle: Handle | None = None
+
+    @property
+    def collision_volume_m3(self) -> float:
+        """Total volume of the part's colliders."""
+        return sum(c.volume_m3 for c in self.collision)
+
+
+class InteriorSurface(FrozenModel):
+    """An upward surface inside an articulated asset (a shelf behind a door, a drawer bottom),
+    in the asset frame at the closed pose. ``part`` names the moving part it belongs to (None:
+    the carcass); ``behind`` the joints that must open to reach it."""
+
+    height: float
+    polygon: list[Vec2] = Field(min_length=3)
+    area_m2: Annotated[float, Field(gt=0.0)]
+    part: ArticulationName | None = None
+    behind: list[ArticulationName] = Field(default_factory=list)
+    clearance_m: PositiveFloat | None = Field(
+        default=None, description="Free height above the surface inside the asset, metres."
+    )
+
+
+class Articulation(FrozenModel):
+    """The moving parts of an asset and the surfaces inside it. The asset's own ``visual``,
+    ``collision`` and ``surfaces`` are its carcass (the part that does not move)."""
+
+    parts: list[ArticulatedPart] = Field(min_length=1)
+    interior: list[InteriorSurface] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _tree(self) -> Articulation:
+        seen: set[str] = set()
+        joints: set[str] = set()
+        for part in self.parts:
+            if part.name in seen:
+                raise ValueError(f"two parts are named {part.name!r}")
+            if part.joint.name in joints:
+                raise ValueError(f"two joints are named {part.joint.name!r}")
+            if part.parent is not None and part.parent not in seen:
+                raise ValueError(f"part {part.name!r}: parent {part.parent!r} must come before it")
+            seen.add(part.name)
+            joints.add(part.joint.name)
+        for surface in self.interior:
+            if surface.part is not None and surface.part not in seen:
+                raise ValueError(f"interior surface on unknown part {surface.part!r}")
+            unknown = [j for j in surface.behind if j not in joints]
+            if unknown:
+                raise ValueError(f"interior surface behind unknown joints {unknown}")
+        return self
+
+    def part(self, name: str) -> ArticulatedPart:
+        """The part called ``name`` (KeyError if none)."""
+        for part in self.parts:
+            if part.name == name:
+                return part
+        raise KeyError(name)
+
+    @property
+    def mass_kg(self) -> float:
+        """Total mass of the moving parts."""
+        return sum(p.mass_kg for p in self.parts)
+
+
 class AssetMeta(FrozenModel):
     """Everything the compiler and the planners need to know about one asset."""
 
@@ -125,6 +271,46 @@ class AssetMeta(FrozenModel):
         description="Largest distance from a point of the visual surface to the union of the "
         "colliders, metres (asset_pipeline.collider_audit); None when not measured.",
     )
+    articulation: Articulation | None = Field(
+        default=None,
+        description="Moving parts (doors, drawers, lids) with their joints and handles, and "
+        "the surfaces inside; None for a rigid asset. When given, ``visual``, ``collision`` "
+        "and ``surfaces`` are the carcass's and ``mass_kg`` is the whole asset's.",
+    )
+
+    @model_validator(mode="after")
+    def _articulated_mass(self) -> AssetMeta:
+        moving = self.articulation.mass_kg if self.articulation is not None else 0.0
+        if self.articulation is not None and self.mass_kg is None:
+            raise ValueError("an articulated asset needs mass_kg (the whole asset's mass)")
+        if self.mass_kg is not None and moving >= self.mass_kg:
+            raise ValueError(
+                f"the moving parts weigh {moving:g} kg, not less than the asset's mass_kg "
+                f"{self.mass_kg:g}"
+            )
+        return self
+
+    @model_serializer(mode="wrap")
+    def _without_absent_articulation(self, handler: Any) -> dict[str, Any]:
+        # A rigid asset's asset.json stays exactly as before articulation existed.
+        data = handler(self)
+        if isinstance(data, dict) and data.get("articulation", 0) is None:
+            del data["articulation"]
+        return data
+
+    @property
+    def articulated(self) -> bool:
+        """True when the asset has moving parts."""
+        return self.articulation is not None
+
+    def files(self) -> list[str]:
+        """Every file the metadata names (meshes, textures, thumbnails), in a fixed order."""
+        named = [p.mesh for p in self.visual] + [p.texture for p in self.visual if p.texture]
+        named += [c.mesh for c in self.collision if c.mesh] + list(self.thumbnails)
+        for part in self.articulation.parts if self.articulation is not None else ():
+            named += [p.mesh for p in part.visual] + [p.texture for p in part.visual if p.texture]
+            named += [c.mesh for c in part.collision if c.mesh]
+        return list(dict.fromkeys(named))
 
     @property
     def collision_volume_m3(self) -> float:

@@ -12,7 +12,10 @@ numbers, stable or not; ``reasons`` says in words why an object is not stable.
     ``settle_drop_m`` (a dropped object falling onto its support);
 (c) it is in no penetration deeper than ``tolerance_m`` at t = 0 (its own deepest pair), does
     not end below the floor or outside its room, rests on the support the scene names, and the
-    simulation raised no MuJoCo warning.
+    simulation raised no MuJoCo warning;
+(d) its moving parts (doors, drawers, lids of articulated objects) end within
+    ``part_rotation_deg`` (hinges) and ``part_travel_m`` (slides) of their authored joint values:
+    a door that swings open by itself makes its object unstable.
 
 Positions are those of the centre of mass and rotations those of the body, so the rule is the
 same whatever the body frame (centre or foot): a footed pole that topples has turned 90°.
@@ -33,7 +36,9 @@ STABILITY_RULE = (
     "monitor window; (b) final pose within displacement_m and rotation_from_authored_deg of the "
     "authored pose at t = 0 (the centre of mass may first sink up to settle_drop_m onto its "
     "support); (c) no penetration deeper than tolerance_m at t = 0, not below the floor, not "
-    "outside its room, on its intended support, no MuJoCo warning. Whatever the body frame."
+    "outside its room, on its intended support, no MuJoCo warning; (d) moving parts (doors, "
+    "drawers, lids) end within part_rotation_deg (hinges) and part_travel_m (slides) of their "
+    "authored joint values. Whatever the body frame."
 )
 
 NonNegative = Annotated[float, Field(ge=0.0)]
@@ -80,6 +85,12 @@ class Thresholds(FrozenModel):
     repair_max_m: NonNegative = Field(
         default=0.05, description="--repair resolves penetrations up to this depth."
     )
+    part_rotation_deg: NonNegative = Field(
+        default=2.0, description="(d) A hinged part ends closer to its authored angle."
+    )
+    part_travel_m: NonNegative = Field(
+        default=0.005, description="(d) A sliding part ends closer to its authored position."
+    )
 
 
 class ObjectReport(FrozenModel):
@@ -121,6 +132,11 @@ class ObjectReport(FrozenModel):
         default=0.0, description="Deepest contact during the monitor window (solver softness)."
     )
     at_rest: bool
+    part_motion: dict[str, NonNegative] = Field(
+        default_factory=dict,
+        description="(d) Per joint of a moving part (door, drawer, lid): how far it ends from its "
+        "authored value, degrees for hinges and metres for slides; empty for rigid objects.",
+    )
     reasons: list[str] = Field(default_factory=list)
 
 
@@ -169,8 +185,10 @@ class StabilityReport(FrozenModel):
     ``thresholds.rotation_from_authored_deg`` of its authored pose at t = 0 (its centre of mass
     may first sink up to ``thresholds.settle_drop_m`` onto its support), and (c) it is in no
     penetration deeper than ``thresholds.tolerance_m`` at t = 0, does not end below the floor or
-    outside its room, rests on its intended support, and MuJoCo raised no warning. Centre of
-    mass and body orientation make the rule independent of the body frame (centre or foot).
+    outside its room, rests on its intended support, and MuJoCo raised no warning, and (d) its
+    moving parts end within ``thresholds.part_rotation_deg`` / ``thresholds.part_travel_m`` of
+    their authored joint values. Centre of mass and body orientation make the rule independent
+    of the body frame (centre or foot).
     ``ok``: every object stable and nothing found by the audit at t = 0.
     """
 

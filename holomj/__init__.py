@@ -8,6 +8,8 @@ MuJoCo, torch, OR-Tools or CoACD until a job runs)::
     res = holomj.compile("house.json", "out/house")                   # any supported input
     rep = holomj.validate("out/house")                                # or a bare MJCF; repair=True
     holomj.render("out/house")                                        # renders/ and report.html
+    holomj.export("out/house", "usd")                                 # or "glb", "urdf"
+    ev = holomj.eval("out/house")                                     # .scores .details
     scene = holomj.Scene.load("out/house")                            # .objects .rooms .report
     lib = holomj.AssetLibrary.default()                               # built on first use
 
@@ -27,6 +29,8 @@ if TYPE_CHECKING:
         Scene,
         add_robot,
         compile,
+        eval,
+        export,
         generate,
         populate,
         render,
@@ -41,6 +45,8 @@ __all__ = [
     "__version__",
     "add_robot",
     "compile",
+    "eval",
+    "export",
     "generate",
     "populate",
     "render",
@@ -58,3 +64,4 @@ def __getattr__(name: str) -> Any:
         globals()[name] = value
         return value
     raise AttributeError(f"module 'holomj' has no attribute {name!r}")
+

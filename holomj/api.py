@@ -11,16 +11,18 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
-from holomj.jobs.scene_reader import Scene as Scene  # re-exported as holomj.Scene
+from holomj.jobs.scene_reader import Scene as _SceneReader
 from holomj.library.store import AssetLibrary as _StoreLibrary
 
 if TYPE_CHECKING:
     from holomj.jobs.add_robot import AddRobotResult
     from holomj.jobs.compile import CompileReport
+    from holomj.jobs.eval import EvalReport
     from holomj.jobs.export import ExportResult
     from holomj.jobs.generate import GenerateResult
     from holomj.jobs.populate import PopulateResult
     from holomj.jobs.stage_log import Listener
+    from holomj.spec.edit import EditReport
     from holomj.spec.report import StabilityReport
 
 
@@ -277,4 +279,76 @@ def export(
 
     return export_folder(
         Path(folder), format, Path(out) if out is not None else None, colliders=colliders
+    )
+
+
+class Scene(_SceneReader):
+    """A holomj scene folder, loaded (re-exported as ``holomj.Scene``): ``Scene.load(folder)``
+    or ``Scene.open(folder)``; ``.objects``, ``.rooms``, ``.report``, ``.model()``, and
+    ``.edit(ops)``."""
+
+    @classmethod
+    def open(cls, folder: Path | str) -> Scene:
+        """Load the scene folder ``folder`` (as :meth:`load`)."""
+        return cls.load(folder)
+
+    def edit(
+        self,
+        ops: Path | str | Sequence[Any],
+        out: Path | str | None = None,
+        *,
+        seed: int = 0,
+        library: Path | str | AssetLibrary | None = None,
+        overwrite: bool = False,
+        validate: bool = True,
+    ) -> EditReport:
+        """``holomj edit``: apply edit operations (a JSON file, or a list of operations as
+        dicts or :mod:`holomj.spec.edit` models) and write the result into ``out`` (a new
+        folder), or back into this folder, which this object then shows.
+
+        Returns the :class:`~holomj.spec.edit.EditReport` (``.ok``, ``.operations`` with each
+        one's ``status`` and ``reason``, ``.added``, ``.removed``, ``.moved``,
+        ``.validation``). Raises :class:`~holomj.errors.InputError` for a malformed operations
+        list (nothing is written) and :class:`~holomj.errors.OutputExistsError` when ``out``
+        exists (without ``overwrite``); refused operations are in the report, not raised.
+        """
+        from holomj.jobs.edit import apply_edits
+
+        report = apply_edits(
+            self.folder,
+            ops,
+            out,
+            seed=seed,
+            library_path=_library_root(library),
+            overwrite=overwrite,
+            validate=validate,
+        )
+        if out is None or Path(out).resolve() == Path(self.folder).resolve():
+            fresh = type(self).load(self.folder)
+            self.spec, self.library = fresh.spec, fresh.library
+            self.__dict__.pop("objects", None)  # the cached object list
+        return report
+
+
+def eval(
+    folder: Path | str,
+    *,
+    prompt: str | None = None,
+    spec: Path | str | dict[str, Any] | None = None,
+    spec_id: str | None = None,
+    validate: bool = False,
+    seed: int = 0,
+) -> EvalReport:
+    """``holomj eval``: measure the scene folder from its geometry: counts, attributes and
+    relations against its ``plan.json`` (or the offline plan of ``prompt``, or the annotation
+    ``spec``: a dict or a .json/.jsonl file, ``spec_id`` picking one), colliding pairs, objects
+    outside their room, support, navigability, front access, doors and windows clear, and
+    stability from ``report.json`` (``validate``: validate when it is absent). Returns an
+    :class:`~holomj.evaluation.report.EvalReport` (``.scores``, ``.details``, ``.overall``,
+    ``.to_json()``); nothing is written. Raises :class:`~holomj.errors.InputError` for a folder
+    that is not a holomj scene, both ``prompt`` and ``spec``, or a bad spec."""
+    from holomj.jobs.eval import evaluate
+
+    return evaluate(
+        Path(folder), prompt=prompt, spec=spec, spec_id=spec_id, validate=validate, seed=seed
     )

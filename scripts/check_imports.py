@@ -90,8 +90,12 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
         "headless rendering, plan view, HTML report (in memory)",
         ("holomj.errors", "holomj.spec", "holomj.library", "holomj.mjcf", "holomj.physics"),
     ),
-    "holomj.export": (
-        "output formats in memory: objects.json, navigation map, summaries",
+    "holomj.evaluation": (
+        "scene metrics from a folder's geometry (never the planner): fidelity, support, reach",
+        ("holomj.errors", "holomj.spec", "holomj.data"),
+    ),
+    "holomj.formats": (
+        "output formats in memory: objects.json, navigation map, summaries, GLB, USD, URDF",
         (
             "holomj.errors",
             "holomj.spec",
@@ -101,9 +105,24 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.robots",
         ),
     ),
+    "holomj.edit": (
+        "scene edit operations applied in memory (add, move, remove, replace, ...)",
+        (
+            "holomj.errors",
+            "holomj.seeds",
+            "holomj.spec",
+            "holomj.library",
+            "holomj.layout",
+            "holomj.retrieval",
+            "holomj.plan",
+            "holomj.mjcf",
+            "holomj.physics",
+        ),
+    ),
     "holomj.jobs": (
         "one module per user-facing job; the output folder (file names, atomic I/O)",
         (
+            "holomj.edit",
             "holomj.errors",
             "holomj.atomic",
             "holomj.seeds",
@@ -118,7 +137,8 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.physics",
             "holomj.robots",
             "holomj.rendering",
-            "holomj.export",
+            "holomj.formats",
+            "holomj.evaluation",
             "asset_pipeline",
         ),
     ),

@@ -13,6 +13,9 @@ import typer
 from holomj.cli.assets import assets_app
 from holomj.cli.batch import batch_command
 from holomj.cli.compile import compile_command
+from holomj.cli.edit import edit_command
+from holomj.cli.eval import eval_command
+from holomj.cli.export import export_command
 from holomj.cli.generate import generate_command, plan_command
 from holomj.cli.info import info_command
 from holomj.cli.layout import layout_app
@@ -42,6 +45,9 @@ app.command("add-robot")(add_robot_command)
 app.command("batch")(batch_command)
 app.command("compile")(compile_command)
 app.command("info")(info_command)
+app.command("eval")(eval_command)
+app.command("edit")(edit_command)
+app.command("export")(export_command)
 app.command("schema")(schema_command)
 
 

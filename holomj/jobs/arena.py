@@ -25,7 +25,7 @@ from dm_control import composer, mjcf
 from dm_control.mjcf import constants
 
 from holomj.errors import FormatError
-from holomj.export.objects_json import OBJECTS_JSON
+from holomj.formats.objects_json import OBJECTS_JSON
 from holomj.jobs.folder import SCENE_XML, read_robot, read_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.mjcf.loading import load_model_file

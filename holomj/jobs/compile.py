@@ -23,7 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from holomj.errors import HolomjError
-from holomj.export.summaries import model_summary, scene_summary
+from holomj.formats.summaries import model_summary, scene_summary
 from holomj.jobs.folder import IMPORT_REPORT, REPORT_JSON, prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, Profile, check_profile, compile_scene

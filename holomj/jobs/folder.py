@@ -127,8 +127,8 @@ def write_scene_folder(
 
 def robot_learning_files(compiled: CompiledScene) -> dict[str, str | bytes]:
     """``objects.json``, ``navmap.json``, ``navmap.png`` and (with a robot) ``robot.json``."""
-    from holomj.export.navmap import build_navmap
-    from holomj.export.objects_json import objects_record
+    from holomj.formats.navmap import build_navmap
+    from holomj.formats.objects_json import objects_record
 
     navmap = build_navmap(compiled)
     files: dict[str, str | bytes] = {

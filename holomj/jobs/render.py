@@ -296,13 +296,21 @@ def _relative(view: dict[str, Any]) -> dict[str, Any]:
     return view
 
 
-def write_report_html(out: Path, *, embed: bool = True) -> Path:
+def write_report_html(out: Path, *, embed: bool = True, interactive: bool = True) -> Path:
     """Write ``OUT/report.html`` from the folder's scene, assets, reports and renders.
 
     ``embed``: images as ``data:`` URIs (a page that stands alone); else linked relatively.
+    ``interactive``: with the 3D view (the scene's GLB, colliders included, in its ``settled``
+    keyframe when it has one, like the images).
     """
     out = Path(out)
     scene = _folder_scene(out)
+    glb = None
+    if interactive:
+        from holomj.formats.glb import scene_glb
+
+        model = load_scene_model(out)
+        glb = scene_glb(model, scene, qpos=settled_qpos(model), colliders=True)
     manifest = read_json_report(out, f"{RENDERS_DIR}/{MANIFEST}")
     manifest = manifest if isinstance(manifest, dict) else None
     images: dict[str, bytes | str] = {}
@@ -318,6 +326,7 @@ def write_report_html(out: Path, *, embed: bool = True) -> Path:
         imported=read_json_report(out, IMPORT_REPORT),
         manifest=manifest,
         images=images,
+        glb=glb,
     )
     target = out / REPORT_HTML
     try:

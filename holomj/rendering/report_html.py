@@ -2,11 +2,20 @@
 
 Images are embedded as base64 ``data:`` URIs, so the page stands alone: it can be copied, mailed
 or kept as a CI artifact without the images beside it (or linked relatively instead, for a
-lighter page). No scripts, no external styles or fonts.
+lighter page). No external scripts, styles or fonts: nothing is fetched when the page is viewed.
 
-Sections: verdict, plan, room views, close-ups, the object table (category, asset, size, mass,
-stable, moved and turned from the authored pose from the validation report when there is one,
-"not validated" otherwise), the validation details, the planner's notes, import notes and
+Given the scene's GLB (:mod:`holomj.formats.glb`), the page opens with an interactive 3D view: the
+GLB embedded as base64, drawn by three.js (``vendor/three-viewer.min.js``: three.js's core,
+GLTFLoader and OrbitControls bundled into one classic script, MIT licence in
+``vendor/three.LICENSE.txt``, rebuilt by ``scripts/build_viewer_vendor.sh``) and ``viewer.js``,
+all inlined, so it works from ``file://`` offline. Orbit, pan and zoom; click an object to see
+its id, category, asset, mass and stability verdict; toggles for colliders, ceilings and small
+objects. ``window.holomjViewer`` is its JS API (see ``viewer.js``). The 3D view is left out of
+printed pages; the PNG views stay for quick looks and for print.
+
+Sections: verdict, 3D view, plan, room views, close-ups, the object table (category, asset, size,
+mass, stable, moved and turned from the authored pose from the validation report when there is
+one, "not validated" otherwise), the validation details, the planner's notes, import notes and
 render facts. :func:`render_page` builds the text from data in memory; the render job
 (:mod:`holomj.jobs.render`) reads a folder's reports and renders and writes ``report.html``.
 """
@@ -14,8 +23,11 @@ render facts. :func:`render_page` builds the text from data in memory; the rende
 from __future__ import annotations
 
 import base64
+import json
 from collections.abc import Mapping
+from functools import cache
 from html import escape
+from pathlib import Path
 from typing import Any
 
 from holomj.library.store import AssetLibrary
@@ -25,6 +37,9 @@ from holomj.spec.scene import SceneObject, SceneSpec
 from holomj.version import __version__
 
 HEADER_COLOR = "#2c3e50"  # the table header; the browser test looks for it
+VIEWER_JS = Path(__file__).with_name("viewer.js")
+THREE_JS = Path(__file__).parent / "vendor" / "three-viewer.min.js"
+THREE_LICENSE = Path(__file__).parent / "vendor" / "three.LICENSE.txt"
 
 _CSS = f"""
 body {{ font-family: system-ui, -apple-system, "Segoe UI", sans-serif; margin: 24px;
@@ -46,6 +61,21 @@ td {{ border-top: 1px solid #ddd; padding: 4px 8px; vertical-align: top; }}
 td.num {{ text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }}
 tr.unstable td {{ background: #fdeaea; }}
 ul {{ margin-top: 4px; }} code {{ background: #eee; padding: 0 3px; }}
+.viewer-wrap {{ display: flex; gap: 14px; align-items: flex-start; flex-wrap: wrap; }}
+#viewer-canvas {{ flex: 1 1 640px; min-width: 320px; height: 620px; border: 1px solid #ccc;
+                  background: #e9edf1; position: relative; }}
+#viewer-canvas canvas {{ display: block; width: 100%; height: 100%; }}
+.viewer-side {{ flex: 0 0 300px; font-size: 13px; }}
+.viewer-side label {{ display: block; margin: 2px 0; }}
+.viewer-side button {{ margin-top: 6px; }}
+#viewer-info {{ margin-top: 12px; background: white; border: 1px solid #ddd; padding: 8px;
+                min-height: 60px; }}
+#viewer-info .viewer-title {{ font-weight: 600; font-size: 14px; margin-bottom: 4px;
+                              word-break: break-all; }}
+#viewer-info th {{ background: none; color: #555; padding: 2px 6px 2px 0; }}
+#viewer-info td {{ border: none; padding: 2px 0; }}
+#viewer-status {{ color: #555; font-size: 12px; }}
+@media print {{ #view3d {{ display: none; }} }}
 """
 
 
@@ -58,6 +88,7 @@ def render_page(
     imported: Any = None,
     manifest: Mapping[str, Any] | None = None,
     images: Mapping[str, bytes | str] | None = None,
+    glb: bytes | None = None,
 ) -> str:
     """The HTML text of the page for ``scene``.
 
@@ -65,7 +96,8 @@ def render_page(
     ``plan``: the planner's plan, ``imported``: the import report (JSON data), ``manifest``: the
     render summary (JSON form; None: not rendered yet). ``images`` maps the image paths the
     manifest names to their PNG bytes (embedded as ``data:`` URIs) or to a URL to link them by;
-    images it lacks are left out.
+    images it lacks are left out. ``glb``: the scene as GLB (with its colliders) for the 3D
+    view; None leaves the view out (and the page without scripts).
     """
     images = images or {}
     parts = [
@@ -76,6 +108,7 @@ def render_page(
         f"<h1>{escape(scene.name)}</h1>",
         f'<p class="sub">{_counts(scene)}</p>',
         _verdict(report),
+        _viewer(scene, library, report, glb) if glb is not None else "",
         _images(manifest, images),
         _object_table(scene, library, report),
         _validation(report),
@@ -195,28 +228,54 @@ def _object_table(scene: SceneSpec, library: AssetLibrary, report: StabilityRepo
     )
 
 
-def _object_row(
+def _object_facts(
     obj: SceneObject, library: AssetLibrary, result: ObjectReport | None, validated: bool
-) -> str:
-    category, size, mass = "?", "?", "?"
+) -> dict[str, Any]:
+    """What the table and the 3D view say about one object (numbers unformatted)."""
+    facts: dict[str, Any] = {
+        "room": obj.room,
+        "asset": obj.asset,
+        "category": None,
+        "size": None,
+        "mass_kg": None,
+        # what the validation simulated, when known; else the scene's flag
+        "static": not result.dynamic if result is not None else bool(obj.static),
+        "support": obj.support,
+    }
     if obj.asset in library:
         meta = library.get(obj.asset).meta
         sx, sy, sz = obj.scale3
-        category = f"{meta.category} (proxy)" if meta.proxy or obj.proxy else meta.category
-        size = f"{meta.size[0] * sx:.2f} × {meta.size[1] * sy:.2f} × {meta.size[2] * sz:.2f}"
-        kg = obj.mass_kg if obj.mass_kg is not None else meta.mass * sx * sy * sz
-        mass = f"{kg:.2f}"
+        proxy = meta.proxy or obj.proxy
+        facts["category"] = f"{meta.category} (proxy)" if proxy else meta.category
+        facts["size"] = (meta.size[0] * sx, meta.size[1] * sy, meta.size[2] * sz)
+        facts["mass_kg"] = obj.mass_kg if obj.mass_kg is not None else meta.mass * sx * sy * sz
+    if result is not None:
+        facts["stable"] = result.stable
+        facts["verdict"] = "stable" if result.stable else "not stable"
+        facts["reasons"] = list(result.reasons)
+        facts["moved_mm"] = result.displacement_m * 1000
+        facts["turned_deg"] = result.rotation_from_authored_deg
+    else:
+        facts["verdict"] = "not in report" if validated else "not validated"
+    return facts
+
+
+def _object_row(
+    obj: SceneObject, library: AssetLibrary, result: ObjectReport | None, validated: bool
+) -> str:
+    facts = _object_facts(obj, library, result, validated)
+    category = facts["category"] or "?"
+    size = "?" if facts["size"] is None else " × ".join(f"{v:.2f}" for v in facts["size"])
+    mass = "?" if facts["mass_kg"] is None else f"{facts['mass_kg']:.2f}"
     if result is not None:
         stable = "yes" if result.stable else "no"
         # how far it ended from its authored pose (rule (b) of the stability rule)
-        drift = f"{result.displacement_m * 1000:.2f}"
-        rotation = f"{result.rotation_from_authored_deg:.2f}"
+        drift = f"{facts['moved_mm']:.2f}"
+        rotation = f"{facts['turned_deg']:.2f}"
         notes = "; ".join(result.reasons)
     else:
-        stable = "not in report" if validated else "not validated"
+        stable = facts["verdict"]
         drift = rotation = notes = "—"
-    # what the validation simulated, when known; else the scene's flag
-    free = result.dynamic if result is not None else not obj.static
     css = ' class="unstable"' if result is not None and not result.stable else ""
     cells = [
         (obj.id, ""),
@@ -225,7 +284,7 @@ def _object_row(
         (obj.asset, ""),
         (size, "num"),
         (mass, "num"),
-        ("free" if free else "static", ""),
+        ("static" if facts["static"] else "free", ""),
         (obj.support or "floor", ""),
         (stable, ""),
         (drift, "num"),
@@ -237,6 +296,61 @@ def _object_row(
         for v, c in cells
     )
     return f"<tr{css}>{tds}</tr>"
+
+
+def _viewer(
+    scene: SceneSpec, library: AssetLibrary, report: StabilityReport | None, glb: bytes
+) -> str:
+    """The 3D view: controls, info panel, the GLB and object facts as data, and the scripts."""
+    by_name = {o.name: o for o in report.objects} if report is not None else {}
+    facts = {}
+    for obj in scene.objects:
+        entry = _object_facts(obj, library, by_name.get(obj.id), report is not None)
+        entry.pop("size")
+        if entry["mass_kg"] is not None:
+            entry["mass_kg"] = round(float(entry["mass_kg"]), 3)
+        for key in ("moved_mm", "turned_deg"):
+            if key in entry:
+                entry[key] = round(float(entry[key]), 2)
+        facts[obj.id] = entry
+    toggles = "".join(
+        f'<label><input type="checkbox" id="layer-{name}"{" checked" if on else ""}> '
+        f"{escape(label)}</label>"
+        for name, label, on in (
+            ("colliders", "colliders", False),
+            ("ceilings", "ceilings", False),
+            ("small", "small objects", True),
+        )
+    )
+    data = base64.b64encode(glb).decode("ascii")
+    return "\n".join(
+        [
+            '<section id="view3d"><h2>3D view</h2><div class="viewer-wrap">',
+            '<div id="viewer-canvas"></div>',
+            f'<div class="viewer-side">{toggles}'
+            '<button type="button" id="viewer-reset">reset view</button>'
+            '<div id="viewer-info">Click an object to see what it is.</div>'
+            '<p id="viewer-status">The 3D view needs JavaScript and WebGL.</p></div></div>',
+            f'<script type="application/json" id="viewer-objects">{_script_json(facts)}</script>',
+            f'<script type="application/octet-stream" id="viewer-glb">{data}</script>',
+            f"<script>{_script_text(THREE_JS)}</script>",
+            f"<script>{_script_text(VIEWER_JS)}</script>",
+            "</section>",
+        ]
+    )
+
+
+def _script_json(data: Any) -> str:
+    """JSON safe inside a ``<script>`` element: no ``<`` at all (``\\u003c`` in strings)."""
+    text = json.dumps(data, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
+    return text.replace("<", "\\u003c").replace(">", "\\u003e")
+
+
+@cache
+def _script_text(path: Path) -> str:
+    """A shipped script, safe to inline (it must not close its ``<script>`` element)."""
+    text = path.read_text(encoding="utf-8")
+    return text.replace("</script", "<\\/script")
 
 
 def _validation(report: StabilityReport | None) -> str:

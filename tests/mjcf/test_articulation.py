@@ -10,7 +10,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from holomj.export.objects_json import objects_record
+from holomj.formats.objects_json import objects_record
 from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene

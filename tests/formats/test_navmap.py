@@ -11,7 +11,7 @@ import pytest
 from PIL import Image
 
 from holomj.errors import FormatError
-from holomj.export.navmap import CODES, build_navmap, rle_decode, rle_encode
+from holomj.formats.navmap import CODES, build_navmap, rle_decode, rle_encode
 from holomj.jobs.folder import write_scene_folder
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene

@@ -1,0 +1,583 @@
+"""One floor object placed among others that stay exactly where they are.
+
+The layout solver lays out a whole room; an edit must not move what it does not touch, so a new
+(or moved, or replaced) floor object is placed by a search over free floor poses instead: every
+centre on the layout's 5 cm grid and every quarter turn (or the one yaw asked), in the room's
+layout polygon (inset from the walls as :mod:`holomj.layout.room_furnishing` does it). The
+checks are the layout's hard rules, in metres, against the real footprints of everything in the
+room (turned by any yaw):
+
+* inside the room, at least 5 cm from every object it would meet in height (floor furniture;
+  wall and ceiling objects hanging lower than its top);
+* out of every door's keep-out zone and leaf sweep, and, when taller than a window's sill, out of
+  the zone in front of it; its front 0.3 m clear of the walls;
+* the way between the room's doors stays open (a 0.6 m walker; only when it was open before),
+  no free floor is cut off from the doors (at most 0.1 m², for a 0.3 m robot), and the object
+  can be reached.
+
+Candidates are ranked by the weight of the relations they satisfy (judged by the layout's own
+predicates, :class:`holomj.layout.room_problem.PreparedRoom`), then by closeness to the
+relation targets (or to a wished-for spot, or to the walls), then by grid order, so the search
+is deterministic; the first that passes every check wins.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+import shapely
+from scipy import ndimage
+from shapely.geometry import Point, Polygon
+from shapely.geometry.polygon import orient
+
+from holomj.edit.state import Refused
+from holomj.layout import geometry as geo
+from holomj.layout.constraints import PLACE_KINDS, Constraint
+from holomj.layout.geometry import LAYOUT_MARGIN_M
+from holomj.layout.place_relations import place_holds
+from holomj.layout.room_furnishing import DOOR_CLEARANCE_M, WALKER_RADIUS_M
+from holomj.layout.room_problem import (
+    LayoutDoor,
+    LayoutObject,
+    LayoutSettings,
+    LayoutWindow,
+    PreparedRoom,
+    RoomProblem,
+)
+from holomj.library.store import AssetLibrary
+from holomj.spec.decor import DECOR_CATEGORIES
+from holomj.spec.scene import SceneObject, SceneSpec
+
+STEP_M = 0.05
+CLEARANCE_M = 0.05
+FRONT_CLEARANCE_M = 0.3
+NAV_RADIUS_M = 0.15  # a 0.3 m robot must reach the new object and keep the floor it reached
+NAV_CELL_M = 0.05
+REACH_M = 0.1  # the robot gets this close to the object's footprint
+LOST_FLOOR_M2 = 0.1
+FLOOR_Z_M = 0.05  # an object whose base is lower than this stands on the floor
+MAX_TRIES = 1500
+NEW = "new"  # the layout name of the object being placed
+_OPENING_KINDS = frozenset({"by_window", "under_window", "facing_window", "by_door", "facing_door"})
+
+
+@dataclass(frozen=True)
+class Wish:
+    """A relation the placed object should satisfy: a layout constraint kind, the target's
+    scene id (None for places), its weight and the words it came from."""
+
+    kind: str
+    target: str | None = None
+    weight: float = 10.0
+    source: str = ""
+
+
+@dataclass
+class Spot:
+    """Where the object goes, and the verdict on every wish there."""
+
+    x: float
+    y: float
+    yaw_deg: float
+    verdicts: list[dict[str, object]] = field(default_factory=list)
+
+    @property
+    def satisfied(self) -> int:
+        """How many wishes hold."""
+        return sum(bool(v["holds"]) for v in self.verdicts)
+
+
+@dataclass(frozen=True)
+class Blocker:
+    """Something on the floor that is not a scene object (a robot's base): its outline, its
+    height and its room (None: any)."""
+
+    id: str
+    polygon: Polygon
+    height: float
+    room: str | None = None
+
+
+@dataclass(frozen=True)
+class _Thing:
+    """An object of the room as placement sees it."""
+
+    id: str
+    polygon: Polygon
+    bottom: float
+    top: float
+    x: float
+    y: float
+    yaw_deg: float
+    width: float
+    depth: float
+    on_floor: bool
+
+
+def object_size(obj: SceneObject, library: AssetLibrary) -> tuple[float, float, float]:
+    """(x extent, y extent, height) of an object, scale applied."""
+    sx, sy, sz = obj.scale3
+    if obj.asset not in library:
+        return (sx, sy, sz)
+    size = library.get(obj.asset).meta.size
+    return (size[0] * sx, size[1] * sy, size[2] * sz)
+
+
+def object_yaw(obj: SceneObject) -> float:
+    """The yaw of an object in degrees (from its quaternion when it has one)."""
+    if obj.quat is None:
+        return obj.yaw_deg
+    w, x, y, z = obj.quat
+    return math.degrees(math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
+
+
+def footprint(x: float, y: float, yaw_deg: float, width: float, depth: float) -> Polygon:
+    """The footprint rectangle (``depth`` along the object's front, ``width`` across)."""
+    return shapely.polygons(_corners(np.array([x]), np.array([y]), yaw_deg, width, depth))[0]
+
+
+def _corners(xs: np.ndarray, ys: np.ndarray, yaw_deg: float, width: float, depth: float):
+    c, s = math.cos(math.radians(yaw_deg)), math.sin(math.radians(yaw_deg))
+    local = np.array(
+        [[depth / 2, width / 2], [-depth / 2, width / 2], [-depth / 2, -width / 2],
+         [depth / 2, -width / 2]]
+    )  # fmt: skip
+    rx = local[:, 0] * c - local[:, 1] * s
+    ry = local[:, 0] * s + local[:, 1] * c
+    coords = np.empty((len(xs), 4, 2))
+    coords[:, :, 0] = xs[:, None] + rx[None, :]
+    coords[:, :, 1] = ys[:, None] + ry[None, :]
+    return np.round(coords, 9)
+
+
+def in_room(scene: SceneSpec, obj: SceneObject, room_id: str) -> bool:
+    """Whether ``obj`` belongs to room ``room_id`` (its ``room``, else where it stands)."""
+    if obj.room is not None:
+        return obj.room == room_id
+    return Polygon(scene.room(room_id).polygon).covers(Point(obj.position[0], obj.position[1]))
+
+
+def room_at(scene: SceneSpec, x: float, y: float) -> str | None:
+    """The room whose floor holds ``(x, y)``, or None."""
+    for room in scene.rooms:
+        if Polygon(room.polygon).buffer(1e-6).covers(Point(x, y)):
+            return room.id
+    return None
+
+
+class RoomFloor:
+    """A room's floor with everything in it held still (``exclude``: ids left out, such as the
+    object being moved and what rests on it)."""
+
+    def __init__(
+        self,
+        scene: SceneSpec,
+        room_id: str,
+        library: AssetLibrary,
+        exclude: frozenset[str] = frozenset(),
+        blockers: Sequence[Blocker] = (),
+    ) -> None:
+        self.scene = scene
+        self.room = scene.room(room_id)
+        inset = scene.wall_thickness / 2 + LAYOUT_MARGIN_M
+        shape = Polygon(self.room.polygon).buffer(-inset, join_style="mitre")
+        if not isinstance(shape, Polygon) or shape.is_empty:
+            raise Refused(f"room {room_id!r} has no usable floor")
+        self.polygon = orient(shape, sign=1.0)
+        self.things: list[_Thing] = []
+        for obj in scene.objects:
+            if obj.id in exclude or obj.support is not None or not in_room(scene, obj, room_id):
+                continue
+            meta = library.get(obj.asset).meta if obj.asset in library else None
+            if meta is not None and meta.category in DECOR_CATEGORIES:
+                continue  # rugs lie under furniture
+            depth, width, height = object_size(obj, library)
+            yaw = object_yaw(obj)
+            x, y, z = obj.position
+            self.things.append(
+                _Thing(
+                    obj.id, footprint(x, y, yaw, width, depth), z, z + height, x, y, yaw,
+                    width, depth, z < FLOOR_Z_M,
+                )
+            )  # fmt: skip
+        for blocker in blockers:
+            if blocker.room not in (None, room_id):
+                continue
+            c = blocker.polygon.centroid
+            x0, y0, x1, y1 = blocker.polygon.bounds
+            self.things.append(
+                _Thing(
+                    blocker.id, blocker.polygon, 0.0, blocker.height, c.x, c.y, 0.0,
+                    y1 - y0, x1 - x0, True,
+                )
+            )  # fmt: skip
+        self.ids = {t.id for t in self.things}
+        self._walk: _Walk | None = None
+
+    # ------------------------------------------------------------------ the layout's view
+
+    def prepared(self, width: float, depth: float, height: float, wishes: Sequence[Wish]):
+        """The layout problem of this room with the object to place (``NEW``) and its wishes,
+        prepared (door zones, window zones, anchors, the walk checker)."""
+        ring = list(self.polygon.exterior.coords)[:-1]
+        doors = []
+        for door in self.scene.doors:
+            if self.room.id not in door.rooms:
+                continue
+            swing = "none"
+            if door.kind == "doorway":
+                swing = "in" if (door.opens_into or door.rooms[0]) == self.room.id else "out"
+            position, span = _on_edge(ring, door.position, door.effective_width, 0.4)
+            doors.append(
+                LayoutDoor(
+                    id=f"d{len(doors)}", position=position, width=span, swing=swing,
+                    hinge=door.hinge_side,
+                )
+            )  # fmt: skip
+        windows = []
+        for k, w in enumerate(x for x in self.scene.windows if self.room.id in x.rooms):
+            position, span = _on_edge(ring, w.position, w.width, 0.2)
+            windows.append(
+                LayoutWindow(
+                    id=f"w{k}", position=position, width=span, sill_height=w.base_height,
+                    height=w.height,
+                )
+            )  # fmt: skip
+        objects = [
+            LayoutObject(
+                id=f"o{k}",
+                width=_bounded(t.width),
+                depth=_bounded(t.depth),
+                height=_bounded(t.top - t.bottom),
+            )
+            for k, t in enumerate(self.things)
+        ]
+        objects.append(LayoutObject(id=NEW, width=width, depth=depth, height=height))
+        alias = {t.id: f"o{k}" for k, t in enumerate(self.things)}
+        constraints = []
+        for wish in wishes:
+            if wish.target is not None and wish.target not in alias:
+                raise Refused(f"{wish.target!r} is not in room {self.room.id!r}")
+            target = alias.get(wish.target) if wish.target is not None else None
+            constraints.append(
+                Constraint(
+                    object=NEW, kind=wish.kind, target=target, weight=wish.weight,  # type: ignore[arg-type]
+                    source=wish.source or None,
+                )
+            )  # fmt: skip
+        problem = RoomProblem(
+            room_id="room",
+            polygon=[(round(x, 6), round(y, 6)) for x, y in ring],
+            size_unit="m",
+            doors=doors,
+            windows=windows,
+            objects=objects,
+            constraints=constraints,
+            settings=LayoutSettings(
+                walker_radius_m=WALKER_RADIUS_M, door_clearance_m=DOOR_CLEARANCE_M
+            ),
+        )
+        return PreparedRoom(problem)
+
+    # ------------------------------------------------------------------ checks
+
+    def _rules(
+        self, prep: PreparedRoom, xs: np.ndarray, ys: np.ndarray, yaw: float, size3: tuple
+    ) -> list[tuple[str, np.ndarray]]:
+        """Every hard rule as (what breaks it, mask of candidates that keep it), in order."""
+        width, depth, height = size3
+        polys = shapely.polygons(_corners(xs, ys, yaw, width, depth))
+        room = self.polygon.buffer(1e-7)
+        rules = [(f"outside room {self.room.id!r}", np.asarray(shapely.covers(room, polys)))]
+        for thing in self.things:
+            if thing.bottom >= height or thing.top <= 0.0:
+                continue
+            gap = np.asarray(shapely.distance(thing.polygon, polys))
+            rules.append((f"overlaps {thing.id}", gap > 1e-9))
+            rules.append(
+                (f"closer than {CLEARANCE_M:g} m to {thing.id}", gap >= CLEARANCE_M - 1e-6)
+            )
+        doors = [d for d in self.scene.doors if self.room.id in d.rooms]
+        for door, zone in zip(doors, prep.door_zones):
+            area = np.asarray(shapely.area(shapely.intersection(zone, polys)))
+            rules.append((f"in the keep-out zone of door {door.id}", area <= 1e-9))
+        windows = [w for w in self.scene.windows if self.room.id in w.rooms]
+        for window, zone in zip(windows, prep.window_zones):
+            if height <= window.base_height:
+                continue
+            area = np.asarray(shapely.area(shapely.intersection(zone, polys)))
+            rules.append(
+                (f"taller than the sill of window {window.id} and in front of it", area <= 1e-9)
+            )
+        fx, fy = math.cos(math.radians(yaw)), math.sin(math.radians(yaw))
+        sx, sy = xs + fx * depth / 2, ys + fy * depth / 2
+        segs = shapely.linestrings(
+            np.stack(
+                [np.stack([sx, sy], -1), np.stack([sx + fx * FRONT_CLEARANCE_M,
+                                                   sy + fy * FRONT_CLEARANCE_M], -1)], 1
+            )
+        )  # fmt: skip
+        rules.append(
+            (
+                f"faces a wall closer than {FRONT_CLEARANCE_M:g} m",
+                np.asarray(shapely.covers(self.polygon.buffer(geo.EPS), segs)),
+            )
+        )
+        return rules
+
+    def problems(
+        self, x: float, y: float, yaw_deg: float, size3: tuple[float, float, float]
+    ) -> list[str]:
+        """The hard rules a pose breaks, in words (empty: it may go there)."""
+        width, depth, height = size3
+        prep = self.prepared(width, depth, height, [])
+        xs, ys = np.array([x]), np.array([y])
+        out = [what for what, ok in self._rules(prep, xs, ys, yaw_deg, size3) if not ok[0]]
+        if not out:
+            out = self._walk_problems(prep, footprint(x, y, yaw_deg, width, depth))
+        return out
+
+    def _walk_problems(self, prep: PreparedRoom, poly: Polygon) -> list[str]:
+        walk = self._walk
+        if walk is None or walk.prep is not prep:
+            walk = self._walk = _Walk(self, prep)
+        return walk.problems(poly)
+
+    # ------------------------------------------------------------------ search
+
+    def place(
+        self,
+        size3: tuple[float, float, float],
+        wishes: Sequence[Wish],
+        *,
+        yaw_deg: float | None = None,
+        near: tuple[float, float] | None = None,
+        within: float | None = None,
+    ) -> Spot:
+        """The best free pose for an object of ``size3`` = (width, depth, height), see the
+        module doc; ``near``/``within``: only candidates within that distance of a point,
+        nearest first. Refused with the commonest broken rule when there is none."""
+        width, depth, height = size3
+        prep = self.prepared(width, depth, height, wishes)
+        new = prep.index[NEW]
+        poses = {
+            prep.index[f"o{k}"]: (t.x, t.y, geo.yaw_index(t.yaw_deg))
+            for k, t in enumerate(self.things)
+        }
+        minx, miny, maxx, maxy = self.polygon.bounds
+        yaws = [yaw_deg] if yaw_deg is not None else [0.0, 90.0, 180.0, 270.0]
+        rows: list[tuple] = []
+        broken: Counter[str] = Counter()
+        for yaw in yaws:
+            k = geo.yaw_index(yaw)
+            hx, hy = _half(width, depth, yaw)
+            gx = np.arange(
+                math.ceil((minx + hx) / STEP_M - 1e-9), math.floor((maxx - hx) / STEP_M + 1e-9) + 1
+            )
+            gy = np.arange(
+                math.ceil((miny + hy) / STEP_M - 1e-9), math.floor((maxy - hy) / STEP_M + 1e-9) + 1
+            )
+            if len(gx) == 0 or len(gy) == 0:
+                continue
+            xs, ys = (a.ravel() * STEP_M for a in np.meshgrid(gx, gy, indexing="ij"))
+            xs, ys = np.round(xs, 6), np.round(ys, 6)
+            if near is not None and within is not None:
+                keep = np.hypot(xs - near[0], ys - near[1]) <= within + 1e-9
+                xs, ys = xs[keep], ys[keep]
+            ok = np.ones(len(xs), dtype=bool)
+            for what, mask in self._rules(prep, xs, ys, yaw, size3):
+                broken[what] += int((ok & ~mask).sum())
+                ok &= mask
+            xs, ys = xs[ok], ys[ok]
+            if len(xs) == 0:
+                continue
+            score = np.zeros(len(xs))
+            for c in prep.constraints:
+                score += c.weight * _holds(prep, c, xs, ys, k, new, poses)
+            second = self._secondary(prep, xs, ys, yaw, size3, wishes, near)
+            rows.extend(
+                (-round(float(s), 6), round(float(d), 6), k, float(x), float(y), yaw)
+                for s, d, x, y in zip(score, second, xs, ys)
+            )
+        rows.sort()
+        for row in rows[:MAX_TRIES]:
+            _, _, _, x, y, yaw = row
+            problems = self._walk_problems(prep, footprint(x, y, yaw, width, depth))
+            if problems:
+                broken[problems[0]] += 1
+                continue
+            return Spot(x, y, yaw % 360.0, self._verdicts(prep, new, poses, x, y, yaw))
+        what = f"{width:.2f} x {depth:.2f} m"
+        if not broken:
+            raise Refused(f"no floor in room {self.room.id!r} for a {what} footprint")
+        commonest = ", ".join(w for w, _ in broken.most_common(2))
+        raise Refused(f"no free floor in room {self.room.id!r} for a {what} object ({commonest})")
+
+    def _secondary(self, prep, xs, ys, yaw, size3, wishes, near) -> np.ndarray:
+        """Among candidates that satisfy as much: the nearest to the wished-for spot, else to
+        the relation targets (beside them for "next to" and "near"), to the windows or doors
+        a place relation names, else to the walls."""
+        if near is not None:
+            return np.hypot(xs - near[0], ys - near[1])
+        out = np.zeros(len(xs))
+        things = {t.id: t for t in self.things}
+        used = False
+        for wish in wishes:
+            if wish.target is not None and wish.target in things:
+                t = things[wish.target]
+                dx, dy = xs - t.x, ys - t.y
+                if wish.kind in ("adjacent_to", "near"):  # beside it, not behind or before it
+                    c, s = math.cos(math.radians(t.yaw_deg)), math.sin(math.radians(t.yaw_deg))
+                    out += np.abs(dx * c + dy * s) + 0.25 * np.abs(-dx * s + dy * c)
+                else:
+                    out += np.hypot(dx, dy)
+                used = True
+            elif wish.kind in _OPENING_KINDS:
+                spans = prep.anchors.doors if "door" in wish.kind else prep.anchors.windows
+                if spans:
+                    out += np.min([np.hypot(xs - o.center[0], ys - o.center[1]) for o in spans], 0)
+                    used = True
+        if used or any(w.kind == "middle" for w in wishes):
+            return out
+        width, depth, _ = size3
+        polys = shapely.polygons(_corners(xs, ys, yaw, width, depth))
+        return np.asarray(shapely.distance(self.polygon.exterior, polys))
+
+    def _verdicts(self, prep, new, poses, x, y, yaw) -> list[dict[str, object]]:
+        at = {**poses, new: (x, y, geo.yaw_index(yaw))}
+        names = {f"o{k}": t.id for k, t in enumerate(self.things)}
+        out = []
+        for c in prep.constraints:
+            holds, detail = prep.evaluate(c, at)
+            out.append(
+                {
+                    "kind": c.kind,
+                    "target": names.get(c.target) if c.target else None,
+                    "weight": c.weight,
+                    "holds": bool(holds),
+                    "detail": detail,
+                    "source": c.source,
+                }
+            )
+        return out
+
+    def verdicts(
+        self, x: float, y: float, yaw_deg: float, size3: tuple, wishes: Sequence[Wish]
+    ) -> list[dict[str, object]]:
+        """The verdict on every wish for an object of ``size3`` at a given pose."""
+        prep = self.prepared(size3[0], size3[1], size3[2], wishes)
+        poses = {
+            prep.index[f"o{k}"]: (t.x, t.y, geo.yaw_index(t.yaw_deg))
+            for k, t in enumerate(self.things)
+        }
+        return self._verdicts(prep, prep.index[NEW], poses, x, y, yaw_deg)
+
+
+class _Walk:
+    """The walkway between doors and the reachable floor of a room, with its objects held."""
+
+    def __init__(self, floor: RoomFloor, prep: PreparedRoom) -> None:
+        self.prep = prep
+        self.rects = [t.polygon.bounds for t in floor.things if t.on_floor]
+        self.walk_ok = prep.walk.check(self.rects).ok
+        self.raster = geo.Raster.around(floor.polygon, NAV_CELL_M)
+        self.base = geo.free_walk_mask(floor.polygon, self.rects, self.raster, NAV_RADIUS_M)
+        self.xs, self.ys = self.raster.centres()
+        seeds = np.zeros_like(self.base)
+        for zone in prep.door_zones:
+            seeds |= np.asarray(shapely.contains_xy(zone, self.xs, self.ys), dtype=bool)
+        self.seeds = seeds
+        self.reach = self._reach(self.base)
+
+    def _reach(self, free: np.ndarray) -> np.ndarray:
+        labels, _ = ndimage.label(free)
+        found = set(np.unique(labels[free & self.seeds]).tolist()) - {0}
+        return np.isin(labels, list(found)) & free
+
+    def problems(self, poly: Polygon) -> list[str]:
+        rect = poly.bounds
+        if self.walk_ok and not self.prep.walk.check([*self.rects, rect]).ok:
+            return ["blocks the way between the doors"]
+        if not self.seeds.any():
+            return []
+        free = geo.clear_of(self.base, self.xs, self.ys, [rect], NAV_RADIUS_M)
+        reach = self._reach(free)
+        lost = float((self.reach & free & ~reach).sum()) * NAV_CELL_M**2
+        if lost > LOST_FLOOR_M2:
+            return [f"cuts {lost:.2f} m² of floor off from the doors"]
+        xmin, ymin, xmax, ymax = rect
+        dx = np.maximum(np.maximum(xmin - self.xs, self.xs - xmax), 0.0)
+        dy = np.maximum(np.maximum(ymin - self.ys, self.ys - ymax), 0.0)
+        close = np.hypot(dx, dy) <= NAV_RADIUS_M + REACH_M + NAV_CELL_M
+        if not (reach & close).any():
+            return ["cannot be reached from a door"]
+        return []
+
+
+def _holds(
+    prep: PreparedRoom,
+    c: Constraint,
+    xs: np.ndarray,
+    ys: np.ndarray,
+    k: int,
+    new: int,
+    poses: dict[int, tuple[float, float, int]],
+) -> np.ndarray:
+    """Whether constraint ``c`` on the new object holds at each candidate centre."""
+    item = prep.items[new]
+    th = prep.thresholds
+    if c.kind == "edge":
+        return np.asarray(geo.edge_holds(xs, ys, k, item.size, prep.walls, th.edge_tolerance))
+    if c.kind in PLACE_KINDS:
+        return np.asarray(
+            place_holds(c.kind, xs, ys, k, item.size, prep.anchors, th.edge_tolerance)
+        )
+    if c.kind == "middle":
+        hx, hy = geo.half_extents(item.width, item.depth, k)
+        boxes = shapely.box(xs - hx, ys - hy, xs + hx, ys + hy)
+        return np.asarray(shapely.distance(prep.room.exterior, boxes)) >= th.middle_gap - geo.EPS
+    assert c.target is not None  # a relation's target is checked when the wish is made
+    j = prep.index[c.target]
+    xt, yt, kt = poses[j]
+    target = prep.items[j]
+    return np.asarray(
+        geo.relation_holds(c.kind, xs, ys, k, item.size, xt, yt, kt, target.size, th), dtype=bool
+    )
+
+
+def _on_edge(
+    ring: Sequence[Sequence[float]], xy: Sequence[float], width: float, least: float
+) -> tuple[tuple[float, float], float]:
+    """An opening at ``xy`` moved onto the nearest edge of the layout polygon ``ring``, as wide
+    as it is but no wider than that edge (the inset edge is shorter than the wall: an opening
+    as wide as its wall is clipped by the inset)."""
+    best: tuple[float, float, float, float, float, float, float] | None = None
+    for i in range(len(ring)):
+        (ax, ay), (bx, by) = ring[i], ring[(i + 1) % len(ring)]
+        length = math.hypot(bx - ax, by - ay)
+        if length < 1e-9:
+            continue
+        tx, ty = (bx - ax) / length, (by - ay) / length
+        t = min(max((xy[0] - ax) * tx + (xy[1] - ay) * ty, 0.0), length)
+        dist = math.hypot(ax + tx * t - xy[0], ay + ty * t - xy[1])
+        if best is None or dist < best[0]:
+            best = (dist, ax, ay, tx, ty, t, length)
+    assert best is not None  # a polygon has edges
+    _, ax, ay, tx, ty, t, length = best
+    span = max(min(width, length - 2e-3), least)
+    t = min(max(t, span / 2), max(length - span / 2, span / 2))
+    return (round(ax + tx * t, 6), round(ay + ty * t, 6)), span
+
+
+def _half(width: float, depth: float, yaw: float) -> tuple[float, float]:
+    """Half extents along x and y of a footprint turned by ``yaw``."""
+    c, s = abs(math.cos(math.radians(yaw))), abs(math.sin(math.radians(yaw)))
+    return depth / 2 * c + width / 2 * s, depth / 2 * s + width / 2 * c
+
+
+def _bounded(value: float) -> float:
+    return min(max(value, 0.011), 9.99)

@@ -12,6 +12,10 @@ The report's ``degraded`` / ``degraded_reason`` say whether CoACD's result was r
 fallback (coarser settings or the single convex hull) because CoACD was unavailable, crashed
 or timed out.
 
+URDF and MJCF files (``.urdf``; ``.xml``/``.mjcf`` whose root is ``<robot>`` or
+``<mujoco>``) go to :func:`asset_pipeline.articulated_import.import_articulated`: the same steps
+per link, and the joints, handles and interior surfaces of an articulated asset.
+
 The bundle holds ``visual_K.obj`` (one per material, with ``vt`` when textured),
 ``texture_K.png`` and ``hull_KK.obj``; no thumbnails. Its bytes are deterministic for the same
 input and options. The report is JSON-able and says what was done and how well.
@@ -71,6 +75,10 @@ def import_asset(
     options = options or ImportOptions()
     path = Path(path)
     where = str(path)
+    from asset_pipeline.articulated_import import articulated_format, import_articulated
+
+    if articulated_format(path) is not None:  # URDF or MJCF: an articulated asset
+        return import_articulated(path, asset_id, options)
     _check_id(asset_id)
     timings: dict[str, float] = {}
     clock = time.perf_counter()

@@ -41,6 +41,8 @@ from holomj.spec.assets import AssetMeta
 from holomj.spec.base import read_json, validate_model
 
 MESH_SUFFIXES = (".glb", ".gltf", ".obj", ".stl", ".ply")
+# URDF and MJCF files: articulated assets (asset_pipeline.articulated_import).
+ARTICULATED_SUFFIXES = (".urdf", ".xml", ".mjcf")
 COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg")
 # Collision meshes shipped beside real assets (V-HACD, LIBERO): not assets themselves.
 _COLLISION_STEMS = re.compile(r"(_vhacd|_col|_collision|_coll)$", re.IGNORECASE)
@@ -181,17 +183,34 @@ def _outcome_dict(outcome: JobOutcome) -> dict[str, Any]:
 
 
 def find_mesh_files(paths: Sequence[Path]) -> list[Path]:
-    """Mesh files named directly, or found (recursively, sorted) in named folders."""
+    """Mesh files named directly, or found (recursively, sorted) in named folders.
+
+    In folders, URDF files and MJCF files (``.xml``/``.mjcf`` with a ``<mujoco>`` root) count
+    too, and the meshes in and below a folder holding one are its links, not assets of their
+    own (a PartNet-Mobility model folder is one asset).
+    """
+    from asset_pipeline.articulated_import import articulated_format
+
     found: list[Path] = []
     for path in paths:
         path = Path(path)
         if path.is_dir():
+            files = [p for p in sorted(path.rglob("*")) if p.is_file()]
+            described = [
+                p
+                for p in files
+                if p.suffix.lower() in ARTICULATED_SUFFIXES and articulated_format(p) is not None
+            ]
+            owners = {p.parent for p in described}
             found.extend(
                 p
-                for p in sorted(path.rglob("*"))
-                if p.is_file()
-                and p.suffix.lower() in MESH_SUFFIXES
-                and not _COLLISION_STEMS.search(p.stem)
+                for p in files
+                if p in described
+                or (
+                    p.suffix.lower() in MESH_SUFFIXES
+                    and not _COLLISION_STEMS.search(p.stem)
+                    and not owners.intersection(p.parents)
+                )
             )
         elif path.exists():
             found.append(path)
@@ -210,7 +229,12 @@ def asset_id_for(path: Path) -> str:
     dropped; other characters not allowed in an id become ``_``. When every component is
     generic, the file name is used anyway.
     """
+    from asset_pipeline.urdf import asset_id_hint
+
     path = Path(path)
+    hint = asset_id_hint(path)  # PartNet-Mobility's mobility.urdf: <model_cat>_<folder>
+    if hint is not None:
+        return _id_text(hint) or "asset"
     names = [path.stem, *(p.name for p in path.parents if p.name)]
     for name in names:
         ident = _id_text(name)
@@ -289,9 +313,14 @@ def plan_jobs(
     keeps its id: re-importing a file updates its asset. An explicit ``asset_id`` held by
     another asset is an :class:`~holomj.errors.InputError` (nothing is replaced).
     """
+    from asset_pipeline.articulated_import import articulated_format, check_articulated_file
+
     files = find_mesh_files(paths)
     if not files:
         raise InputError("no mesh files found", where=", ".join(str(p) for p in paths))
+    for path in files:  # a malformed URDF/MJCF is bad input: refused before anything is written
+        if articulated_format(path) is not None:
+            check_articulated_file(path)
     if asset_id is not None and len(files) > 1:
         raise InputError("--id names one asset but several files were given", where="--id")
     existing = existing or {}
@@ -343,6 +372,10 @@ def source_files(path: Path) -> list[Path]:
     textures = folder / "textures"
     if textures.is_dir():
         companions += sorted(p for p in textures.iterdir() if p.is_file())
+    from asset_pipeline.articulated_import import articulated_format, articulated_sources
+
+    if articulated_format(path) is not None:  # the link meshes it names, wherever they are
+        companions += [p for p in articulated_sources(path) if p not in companions]
     return [path, *companions]
 
 

@@ -82,7 +82,7 @@ def import_command(
     strict: StrictOption = False,
     as_json: JsonOption = False,
 ) -> None:
-    """Import meshes (GLB, glTF, OBJ, STL, PLY) as simulation-ready assets.
+    """Import meshes (GLB, glTF, OBJ, STL, PLY) and articulated models (URDF, MJCF) as assets.
 
     When CoACD is unavailable, crashes or times out, the asset gets a fallback decomposition
     (coarser settings, else the single convex hull) and is reported as degraded: still added

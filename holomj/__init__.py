@@ -10,6 +10,7 @@ MuJoCo, torch, OR-Tools or CoACD until a job runs)::
     holomj.render("out/house")                                        # renders/ and report.html
     holomj.export("out/house", "usd")                                 # or "glb", "urdf"
     ev = holomj.eval("out/house")                                     # .scores .details
+    rf = holomj.refine("out/house", "add a plant in the corner")      # .ok .rounds .checks
     scene = holomj.Scene.load("out/house")                            # .objects .rooms .report
     lib = holomj.AssetLibrary.default()                               # built on first use
 
@@ -33,6 +34,7 @@ if TYPE_CHECKING:
         export,
         generate,
         populate,
+        refine,
         render,
         validate,
     )
@@ -49,6 +51,7 @@ __all__ = [
     "export",
     "generate",
     "populate",
+    "refine",
     "render",
     "validate",
 ]
@@ -64,4 +67,3 @@ def __getattr__(name: str) -> Any:
         globals()[name] = value
         return value
     raise AttributeError(f"module 'holomj' has no attribute {name!r}")
-

@@ -21,6 +21,7 @@ if TYPE_CHECKING:
     from holomj.jobs.export import ExportResult
     from holomj.jobs.generate import GenerateResult
     from holomj.jobs.populate import PopulateResult
+    from holomj.jobs.refine import RefineResult
     from holomj.jobs.stage_log import Listener
     from holomj.spec.edit import EditReport
     from holomj.spec.report import StabilityReport
@@ -351,4 +352,50 @@ def eval(
 
     return evaluate(
         Path(folder), prompt=prompt, spec=spec, spec_id=spec_id, validate=validate, seed=seed
+    )
+
+
+def refine(
+    folder: Path | str,
+    instruction: str,
+    *,
+    rounds: int = 3,
+    planner: Literal["offline", "llm"] = "offline",
+    out: Path | str | None = None,
+    overwrite: bool = False,
+    seed: int = 0,
+    library: Path | str | AssetLibrary | None = None,
+    llm: Any = None,
+    images: bool | None = None,
+    max_ops: int | None = None,
+    render: bool = True,
+) -> RefineResult:
+    """``holomj refine``: make the scene folder follow ``instruction`` ("add a reading corner
+    with an armchair and a floor lamp by the window") round by round: render, plan edits
+    (``planner``: offline, or ``llm``: a vision-language model at an OpenAI-compatible
+    endpoint; ``llm``: an :class:`~holomj.plan.llm_config.LLMConfig` or a dict of
+    ``base_url``, ``model``, ``api_key``, ``config_file``; ``images=False``: text only), apply
+    them to a copy, validate and score it, keep the round when the score does not fall. The
+    result goes into ``out`` (default: back into ``folder``) with ``refine.json``.
+
+    Returns a :class:`~holomj.jobs.refine.RefineResult` (``.ok``, ``.score_before``,
+    ``.score_after``, ``.rounds``, ``.checks``, ``.record``). Raises
+    :class:`~holomj.errors.InputError` for a folder that is not a holomj scene, an empty
+    instruction, bad numbers or no LLM configured, and
+    :class:`~holomj.errors.OutputExistsError` when ``out`` exists (without ``overwrite``)."""
+    from holomj.jobs.refine import refine as refine_folder
+
+    return refine_folder(
+        Path(folder),
+        instruction,
+        rounds=rounds,
+        planner=planner,
+        out=out,
+        overwrite=overwrite,
+        seed=seed,
+        library_path=_library_root(library),
+        llm_config=llm,
+        images=images,
+        max_ops=max_ops,
+        render=render,
     )

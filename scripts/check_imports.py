@@ -119,10 +119,16 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.physics",
         ),
     ),
+    "holomj.refinement": (
+        "refine decisions in memory: instructions, goals, offline and LLM planners, safety, "
+        "pointing",
+        ("holomj.errors", "holomj.spec", "holomj.plan", "holomj.evaluation"),
+    ),
     "holomj.jobs": (
         "one module per user-facing job; the output folder (file names, atomic I/O)",
         (
             "holomj.edit",
+            "holomj.refinement",
             "holomj.errors",
             "holomj.atomic",
             "holomj.seeds",

@@ -21,6 +21,7 @@ from holomj.cli.info import info_command
 from holomj.cli.layout import layout_app
 from holomj.cli.materials import materials_app
 from holomj.cli.populate import populate_command
+from holomj.cli.refine import refine_command
 from holomj.cli.render import render_command
 from holomj.cli.robot import add_robot_command
 from holomj.cli.schema import schema_command
@@ -47,6 +48,7 @@ app.command("compile")(compile_command)
 app.command("info")(info_command)
 app.command("eval")(eval_command)
 app.command("edit")(edit_command)
+app.command("refine")(refine_command)
 app.command("export")(export_command)
 app.command("schema")(schema_command)
 

@@ -13,6 +13,13 @@ validation of the new scene (what ``holomj validate SCENE`` reports: furniture f
 Everything else is kept as it was; renders and ``report.html`` then show the scene before this
 run, which the report lists under ``stale_files`` (``holomj render OUT`` refreshes them).
 
+With ``--instruction TEXT --planner llm`` a vision-language model (the ``[llm]`` configuration of
+``holomj generate --planner llm``) is shown a render of the receptacle from above, names the
+next small object and points at a pixel where it goes; the pixel's ray meets the receptacle's
+surface and the object is dropped there; up to ``--count`` objects (the records are in
+``populate_report.json``: ``pointing``). Offline (``--planner offline``, or no LLM configured)
+the instruction's small objects are dropped, or the receptacle priors decide.
+
 Exit codes: 0 when every requested object was placed, 1 when some were not (the scene with the
 placed ones and the report are written all the same), 2 for bad input.
 """
@@ -23,8 +30,18 @@ from typing import Annotated
 
 import typer
 
-from holomj.cli.options import FolderArg, JsonOption, LibraryOption, SeedOption
-from holomj.cli.output import emit_json, guard, library_root, out_console
+from holomj.cli.options import (
+    FolderArg,
+    JsonOption,
+    LibraryOption,
+    LlmConfigOption,
+    LlmKeyOption,
+    LlmModelOption,
+    LlmUrlOption,
+    PlannerOption,
+    SeedOption,
+)
+from holomj.cli.output import emit_json, err_console, guard, library_root, out_console
 
 
 def populate_command(
@@ -40,8 +57,31 @@ def populate_command(
     ] = None,
     count: Annotated[
         int,
-        typer.Option("--count", min=1, max=20, help="Objects drawn when --objects is not given."),
+        typer.Option(
+            "--count",
+            min=1,
+            max=20,
+            help="Objects drawn when --objects is not given (with --instruction: at most).",
+        ),
     ] = 3,
+    instruction: Annotated[
+        str | None,
+        typer.Option(
+            "--instruction",
+            "-i",
+            help="What to put on it, in words (instead of --objects); with --planner llm the "
+            "model names each object and points at where it goes.",
+        ),
+    ] = None,
+    planner: PlannerOption = "offline",
+    images: Annotated[
+        bool,
+        typer.Option("--images/--no-images", help="Send the render to the LLM (else text only)."),
+    ] = True,
+    llm_base_url: LlmUrlOption = None,
+    llm_model: LlmModelOption = None,
+    llm_api_key: LlmKeyOption = None,
+    llm_config: LlmConfigOption = None,
     seed: SeedOption = 0,
     library: LibraryOption = None,
     max_attempts: Annotated[
@@ -57,6 +97,12 @@ def populate_command(
     from holomj.jobs.populate import parse_objects, populate_folder
 
     requests = guard(lambda: parse_objects(objects)) if objects is not None else None
+    settings = {
+        "base_url": llm_base_url,
+        "model": llm_model,
+        "api_key": llm_api_key,
+        "config_file": llm_config,
+    }
     library_path = library_root(library)
     outcome = guard(
         lambda: populate_folder(
@@ -67,6 +113,11 @@ def populate_command(
             library_path=library_path,
             max_attempts=max_attempts,
             count=count,
+            instruction=instruction,
+            planner=planner,  # type: ignore[arg-type]
+            llm_config=settings,
+            images=None if images else False,
+            log=None if as_json else lambda line: err_console.print(line, markup=False),
         )
     )
     if as_json:
@@ -77,7 +128,9 @@ def populate_command(
             f"[bold {colour}]placed {outcome.placed}/{outcome.requested}[/] on {on} "
             f"-> {outcome.folder} (see {POPULATE_REPORT})"
         )
-        if outcome.report.get("drawn_from"):
+        for note in outcome.report.get("notes", []):
+            out_console.print(f"  note: {note}", markup=False)
+        if outcome.report.get("drawn_from") and outcome.report["drawn_from"] != "llm pointing":
             names = ", ".join(f"{r['name']}:{r['count']}" for r in outcome.report["requests"])
             out_console.print(
                 f"  drawn from the {outcome.report['drawn_from']} statistics: {names}",

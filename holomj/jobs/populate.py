@@ -10,14 +10,21 @@ scene is written back into the same folder atomically: ``scene.xml``, ``scene.js
 outcome; earlier runs are kept under ``runs``). Everything else is kept as it was; renders and
 ``report.html`` then show the scene before this run, which the report lists under
 ``stale_files`` (``holomj render SCENE`` refreshes them).
+
+**With an instruction** (``instruction="a mug and two books for a reading break"``, no
+``requests``): with ``planner="llm"`` the model picks and places the objects by pointing at a
+render of the receptacle (:mod:`holomj.jobs.pointing`); offline (``planner="offline"``, or no
+LLM configured: the report says so) the instruction's small objects that the libraries hold
+are dropped, and the receptacle priors decide when it names none.
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from holomj.errors import HolomjError, InputError
 from holomj.jobs.folder import (
@@ -97,18 +104,35 @@ def populate_folder(
     library_path: Path | None = None,
     max_attempts: int = 20,
     count: int = DEFAULT_COUNT,
+    instruction: str | None = None,
+    planner: Literal["offline", "llm"] = "offline",
+    llm_config: Any = None,
+    images: bool | None = None,
+    log: Callable[[str], None] | None = None,
 ) -> PopulateResult:
     """Populate the scene in ``folder`` and write it back (see the module docstring).
     ``requests``: ``[(category or asset id, count), ...]`` or the ``"mug:2,book"`` text form;
     None draws ``count`` objects from what sits on such a receptacle in AI2-THOR
-    (:mod:`holomj.jobs.receptacle_priors`).
+    (:mod:`holomj.jobs.receptacle_priors`), or, with ``instruction``, up to ``count`` objects
+    the instruction asks for (``planner="llm"``: named and pointed at by the model;
+    ``llm_config``: a :class:`holomj.plan.llm_config.LLMConfig`, default from the environment
+    and ``$HOLOMJ_HOME/config.toml``; ``images``: send the renders, default yes).
 
     Raises :class:`~holomj.errors.InputError` for a folder that is not a holomj scene, a bad
-    seed or attempt count, an unknown receptacle or request.
+    seed or attempt count, an unknown receptacle or request, both ``requests`` and
+    ``instruction``, or an unknown planner.
     """
     folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
     if isinstance(requests, str):
         requests = parse_objects(requests)
+    if instruction is not None:
+        instruction = " ".join(instruction.split())
+        if not instruction:
+            raise InputError("empty instruction", where="--instruction")
+        if requests is not None:
+            raise InputError("give --objects or --instruction, not both", where="--instruction")
+    if planner not in ("offline", "llm"):
+        raise InputError(f"unknown planner {planner!r}", where="--planner", fix="offline or llm")
     if not 0 <= seed <= MAX_SEED:
         raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
     if max_attempts < 1 or max_attempts > MAX_ATTEMPTS:
@@ -119,38 +143,106 @@ def populate_folder(
         libraries.append(AssetLibrary.open(library_path))
     library = merge_libraries(*libraries)
     drawn_from = None
-    if requests is None:
-        if not 1 <= count <= MAX_DRAWN:
-            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
-        category = library.get(find_object(scene, receptacle_id).asset).meta.category
-        requests, drawn_from = prior_requests(
-            category, library, stage_rng(seed, "populate", "priors"), count
-        )
+    notes: list[str] = []
 
     def with_robot(compiled: CompiledScene) -> CompiledScene:
         return attach_folder_robot(compiled, folder)
 
-    result = populate(
-        scene,
-        library,
-        receptacle_id,
-        requests,
-        seed_rng(seed),
-        max_attempts=max_attempts,
-        attach=with_robot,
-    )
-    compiled = with_robot(compile_scene(result.scene, library))
-    run = {
-        "receptacle": receptacle_id,
-        "requests": [{"name": n, "count": c} for n, c in requests],
-        "drawn_from": drawn_from,
-        "seed": seed,
-        "max_attempts": max_attempts,
-        **result.to_dict(),
-    }
+    chat = None
+    if instruction is not None and requests is None and planner == "llm":
+        chat, why = _chat(llm_config, images, seed, log)
+        if chat is None:
+            notes.append(f"no LLM to point with ({why}): the offline planner decided")
+    if requests is None and chat is None:
+        if not 1 <= count <= MAX_DRAWN:
+            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
+        category = library.get(find_object(scene, receptacle_id).asset).meta.category
+        if instruction is not None:
+            requests = _instruction_requests(instruction, library, count)
+            drawn_from = "instruction" if requests else None
+        if not requests:
+            requests, drawn_from = prior_requests(
+                category, library, stage_rng(seed, "populate", "priors"), count
+            )
+    if chat is not None:
+        if not 1 <= count <= MAX_DRAWN:
+            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
+        from holomj.jobs.pointing import populate_by_pointing
+
+        find_object(scene, receptacle_id)
+        pointed = populate_by_pointing(
+            folder,
+            scene,
+            receptacle_id,
+            instruction or "",
+            count=count,
+            chat=chat,
+            own=libraries[0],
+            source=libraries[1] if len(libraries) > 1 else None,
+            seed=seed,
+            max_attempts=max_attempts,
+            attach=with_robot,
+            log=log,
+        )
+        result_scene = pointed.scene
+        library = merge_libraries(*libraries)  # with the assets made on demand
+        placements = [
+            {
+                "object_id": r.get("object_id"),
+                "asset": r.get("asset"),
+                "accepted": r.get("status") == "placed",
+                "reason": r.get("reason", r.get("status")),
+                "attempts": r.get("attempts", 0),
+            }
+            for r in pointed.records
+            if r.get("status") != "done"
+        ]
+        run: dict[str, Any] = {
+            "receptacle": receptacle_id,
+            "requests": [{"name": r["name"], "count": 1} for r in pointed.records if r.get("name")],
+            "drawn_from": "llm pointing",
+            "seed": seed,
+            "max_attempts": max_attempts,
+            "requested": len(placements),
+            "placed": pointed.placed,
+            "placements": placements,
+            "pointing": pointed.records,
+            "llm": {
+                "model": chat.config.model,
+                "images": chat.images,
+                "text_only_reason": chat.text_only_reason,
+                **pointed.usage,
+            },
+        }
+    else:
+        assert requests is not None  # drawn above
+        result = populate(
+            scene,
+            library,
+            receptacle_id,
+            requests,
+            seed_rng(seed),
+            max_attempts=max_attempts,
+            attach=with_robot,
+        )
+        result_scene = result.scene
+        run = {
+            "receptacle": receptacle_id,
+            "requests": [{"name": n, "count": c} for n, c in requests],
+            "drawn_from": drawn_from,
+            "seed": seed,
+            "max_attempts": max_attempts,
+            **result.to_dict(),
+        }
+    if instruction is not None:
+        run["instruction"] = instruction
+        run["planner"] = "llm" if chat is not None else "offline"
+    if notes:
+        run["notes"] = notes
+    compiled = with_robot(compile_scene(result_scene, library))
     written: dict[str, Any] = {}
     if (folder / REPORT_JSON).exists():
-        validation = _validate(result.scene, library, folder)
+        validation = _validate(result_scene, library, folder)
         written[REPORT_JSON] = validation.model_dump(mode="json")
         run["validation"] = {
             "ok": validation.ok,
@@ -170,6 +262,43 @@ def populate_folder(
         placed=run["placed"],
         report=report,
     )
+
+
+def _chat(
+    config: Any, images: bool | None, seed: int, log: Callable[[str], None] | None
+) -> tuple[Any, str]:
+    """The model to point with, or (None, why not) when none is configured."""
+    from holomj.jobs.refine import resolve_llm_config
+    from holomj.refinement.llm import VisionChat, images_enabled
+
+    try:
+        config = resolve_llm_config(config)
+    except InputError as err:
+        return None, err.one_line()
+    return VisionChat(config, images=images_enabled(images), seed=seed, log=log), ""
+
+
+def _instruction_requests(
+    instruction: str, library: AssetLibrary, count: int
+) -> list[tuple[str, int]]:
+    """The small objects an instruction names that the library holds (at most ``count``)."""
+    from holomj.plan.knowledge import knowledge_base
+    from holomj.plan.prompt import parse_prompt
+
+    kb = knowledge_base()
+    requests: list[tuple[str, int]] = []
+    left = count
+    for request in parse_prompt(instruction, kb).objects:
+        kind = kb.objects.get(request.kind)
+        if request.excluded or kind is None or kind.placement != "object" or left <= 0:
+            continue
+        assets = [a for a in library.by_category(kind.category) if "object" in a.meta.placement]
+        if not assets:
+            continue
+        n = min(request.quantity or (2 if request.plural else 1), left)
+        requests.append((kind.category, n))
+        left -= n
+    return requests
 
 
 def _validate(scene: SceneSpec, library: AssetLibrary, folder: Path) -> StabilityReport:

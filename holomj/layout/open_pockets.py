@@ -1,18 +1,21 @@
 """Free floor a robot cannot reach: measured on a layout, and reduced by nudging furniture.
 
-A robot stands where its disc fits between the walls and the footprints (a raster of
-:data:`CELL_M` cells). The *reachable share* is the part of that free floor a robot reaches from a
-door's keep-out zone, with a margin both ways (:data:`FREE_RADIUS_M`, :data:`PASSAGE_RADIUS_M`
-around :data:`ROBOT_RADIUS_M`). Furniture clusters can cut off pockets (the corner behind
-an armchair and a side table); :func:`open_pockets` moves the furniture around a pocket, a grid
-step at a time up to :data:`MAX_SHIFT_M`, keeping a move only when every hard rule still holds,
-the reachable share grows and no satisfied constraint is lost, except that below
-:data:`TEMPLATE_SHARE` the templates' constraints (not the prompt's, :data:`RELATION_WEIGHT`)
-may give way, and below :data:`CUT_OFF_SHARE` (the door is cut off) any soft constraint may;
-until the share reaches :data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were
-tried (:data:`MAX_TRIALS_SHORT` when less than :data:`TEMPLATE_SHARE` is reachable; a move that
-opens the pocket and keeps every constraint is taken at once). While a door is cut off, only
-what borders both the pocket and the floor reached is moved.
+A robot stands where its disc fits between the walls and the footprints (a raster of :data:`CELL_M`
+cells). The *reachable share* is the part of that free floor a robot reaches from a door's keep-out
+zone, with a margin both ways (:data:`FREE_RADIUS_M`, :data:`PASSAGE_RADIUS_M` around
+:data:`ROBOT_RADIUS_M`). Furniture clusters can cut off pockets (the corner behind an armchair and
+a side table); :func:`open_pockets` moves the furniture around a pocket, a grid step at a time up
+to :data:`MAX_SHIFT_M`, pushing ahead of it, just clear, what it would come too close to, then on
+to :data:`MAX_PUSH_SHIFT_M` while it pushes something (a bed slides with its nightstand: the floor
+beside a bed fenced by a wardrobe opposite its foot opens only when the bed clears the wardrobe,
+and its nightstand stands in the way), keeping a move only when every hard rule still holds, the
+reachable share grows and no satisfied constraint is lost, except that below :data:`TEMPLATE_SHARE`
+the templates' constraints (not the prompt's, :data:`RELATION_WEIGHT`) may give way, and below
+:data:`CUT_OFF_SHARE` (the door is cut off) any soft constraint may; until the share reaches
+:data:`TARGET_SHARE`, no move helps or :data:`MAX_TRIALS` poses were tried
+(:data:`MAX_TRIALS_SHORT` when less than :data:`TEMPLATE_SHARE` is reachable; a move that opens the
+pocket and keeps every constraint is taken at once). While a door is cut off, only what borders
+both the pocket and the floor reached is moved.
 """
 
 from __future__ import annotations
@@ -38,6 +41,7 @@ PASSAGE_RADIUS_M = 0.25
 CELL_M = 0.05
 TARGET_SHARE = 0.985
 MAX_SHIFT_M = 0.8
+MAX_PUSH_SHIFT_M = 1.2  # ... for a move that pushes others along (a group clears more)
 MAX_ROUNDS = 8
 CUT_OFF_SHARE = 0.9  # below this share a door is cut off: moves may then cost soft constraints
 TEMPLATE_SHARE = 0.97  # below this share moves may cost the templates' (not the prompt's) ones
@@ -71,8 +75,8 @@ class ReachMeter:
     def split(self, rects: Sequence[Sequence[float]]) -> tuple[float, np.ndarray, np.ndarray]:
         """The reachable share, the mask of free cells not reachable from a door and the mask
         of those reachable."""
-        free = geo.clear_of(self.base_free, self.xs, self.ys, rects, FREE_RADIUS_M)
-        passable = geo.clear_of(self.base_pass, self.xs, self.ys, rects, PASSAGE_RADIUS_M)
+        free = self._clear_of(self.base_free, rects, FREE_RADIUS_M)
+        passable = self._clear_of(self.base_pass, rects, PASSAGE_RADIUS_M)
         total = int(free.sum())
         if total == 0 or not self.applicable:
             return 1.0, np.zeros_like(free), free
@@ -83,6 +87,28 @@ class ReachMeter:
         # smaller one covers from there
         reach = ndimage.binary_dilation(core, self.sweep, iterations=self.sweep_steps) & free
         return float(reach.sum()) / total, free & ~reach, reach
+
+    def _clear_of(
+        self, free: np.ndarray, rects: Sequence[Sequence[float]], radius: float
+    ) -> np.ndarray:
+        """:func:`geo.clear_of`, working only on the cells around each rect (the same mask,
+        many times faster in a large room: the poses tried are many)."""
+        free = free.copy()
+        r = self.raster
+        nx, ny = free.shape
+        for xmin, ymin, xmax, ymax in rects:
+            # one cell more than the radius each way: the cells left out are farther than it
+            i0 = max(int(np.floor((xmin - radius - r.x0) / r.cell)) - 1, 0)
+            i1 = min(int(np.ceil((xmax + radius - r.x0) / r.cell)) + 1, nx)
+            j0 = max(int(np.floor((ymin - radius - r.y0) / r.cell)) - 1, 0)
+            j1 = min(int(np.ceil((ymax + radius - r.y0) / r.cell)) + 1, ny)
+            if i0 >= i1 or j0 >= j1:
+                continue
+            xs, ys = self.xs[i0:i1, j0:j1], self.ys[i0:i1, j0:j1]
+            dx = np.maximum(np.maximum(xmin - xs, xs - xmax), 0.0)
+            dy = np.maximum(np.maximum(ymin - ys, ys - ymax), 0.0)
+            free[i0:i1, j0:j1] &= dx * dx + dy * dy >= radius * radius
+        return free
 
 
 def reachable_share(prep: PreparedRoom, poses: dict[int, Pose]) -> float:
@@ -106,6 +132,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     weight = satisfied_weight(prep, prep.metres(poses))
     asked = asked_weight(prep, poses)
     steps = max(1, round(MAX_SHIFT_M / g))
+    push_steps = max(steps, round(MAX_PUSH_SHIFT_M / g))
     budget = MAX_TRIALS if share >= TEMPLATE_SHARE else MAX_TRIALS_SHORT
     trials = 0
     for _ in range(MAX_ROUNDS):
@@ -113,13 +140,14 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
         # a door cut off is reopened by what stands between the floor reached and the rest
         frontier = reached if share < CUT_OFF_SHARE else None
         for i in _bordering(prep, poses, pocket, meter, frontier):
-            x, y, k = poses[i]
             for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)):
-                for n in range(1, steps + 1):
+                for n in range(1, push_steps + 1):
+                    trial = _shifted(prep, poses, i, dx, dy, n)
+                    if n > steps and sum(trial[j] != poses[j] for j in trial) < 2:
+                        break  # alone, it goes no farther than MAX_SHIFT_M
                     trials += 1
                     if trials > budget:
                         break
-                    trial = {**poses, i: (x + dx * n, y + dy * n, k)}
                     checks, _ = hard_checks(prep, trial)
                     if not checks.ok:
                         break
@@ -154,6 +182,40 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
         if share >= TARGET_SHARE:
             break
     return poses
+
+
+def _shifted(
+    prep: PreparedRoom, poses: dict[int, Pose], i: int, dx: int, dy: int, n: int
+) -> dict[int, Pose]:
+    """``poses`` with object ``i`` moved ``n`` grid steps along ``(dx, dy)``, pushing ahead of it
+    what it would come closer to than the clearance (and what that would, in turn), just far
+    enough to keep the clearance: a bed slides with its nightstand, a desk with its chair."""
+    g = prep.grid
+    gap_min = prep.settings.clearance_m - 1e-6  # what hard_checks tolerates
+    x, y, k = poses[i]
+    out = {**poses, i: (x + dx * n, y + dy * n, k)}
+    rects = {j: prep.footprint(j, px * g, py * g, pk) for j, (px, py, pk) in out.items()}
+
+    def ahead(r: Sequence[float]) -> float:
+        return (r[0] + r[2]) * dx + (r[1] + r[3]) * dy
+
+    movers = [i]
+    for _ in range(len(out) ** 2):  # pushes only go forward: a bound that is never reached
+        if not movers:
+            break
+        a = movers.pop()
+        for j in out:
+            if j in (i, a) or ahead(rects[j]) <= ahead(rects[a]):
+                continue  # what is behind is left, and hard_checks judges it
+            gx, gy = geo.rect_gaps(rects[a], rects[j])
+            if max(gx, gy) >= gap_min:
+                continue
+            m = int(np.ceil(((gap_min - (gx if dx else gy)) / g) - 1e-9))
+            px, py, pk = out[j]
+            out[j] = (px + dx * m, py + dy * m, pk)
+            rects[j] = prep.footprint(j, out[j][0] * g, out[j][1] * g, pk)
+            movers.append(j)
+    return out
 
 
 def _solved(best: tuple[tuple[bool, float, float], Any] | None, weight: float) -> bool:

@@ -8,6 +8,7 @@ from holomj.layout.open_pockets import open_pockets, reachable_share
 from holomj.layout.room_problem import PreparedRoom, problem_from_data
 from holomj.layout.rugs import Anchor, RugPose, _footprint, lay_rug, lay_rugs
 from holomj.layout.solve import hard_checks, solve_room
+from holomj.layout.solver_greedy import satisfied_weight
 
 
 def test_a_rug_goes_under_the_coffee_table_along_its_long_side() -> None:
@@ -115,3 +116,45 @@ def test_what_gives_way_to_open_a_pocket() -> None:
     assert _may_give_way(share, 10.0, kept) and not _may_give_way(share, 10.0, lost)
     # above it: nothing gives way
     assert not _may_give_way(TEMPLATE_SHARE + 0.001, 10.0, kept)
+
+
+def test_a_pocket_fenced_by_a_bed_and_a_wardrobe_opens_with_the_nightstand_pushed_along() -> None:
+    # a bed against the bottom wall between two nightstands and a wardrobe on the top wall over
+    # its foot, 0.4 m off the right wall: the floor right of the bed is cut off (the aisle over
+    # the bed is 0.45 m). It opens only when the bed clears the wardrobe, pushing its nightstand
+    # along; the wardrobe cannot slide left (a window) and moving it alone does not open it.
+    data = {
+        "polygon": [[0, 0], [5.25, 0], [5.25, 3.15], [0, 3.15]],
+        "size_unit": "m",
+        "doors": [{"id": "d", "position": [0, 1.3], "width": 1.0}],
+        "windows": [
+            {"id": "w0", "position": [2.65, 3.15], "width": 1.2, "sill_height": 0.8},
+            {"id": "w1", "position": [5.25, 1.6], "width": 1.3, "sill_height": 0.8},
+        ],
+        "objects": [
+            {"id": "bed", "width": 1.6, "depth": 2.1, "height": 1.0, "priority": 100},
+            {"id": "nightstand", "width": 0.45, "depth": 0.4, "height": 0.55},
+            {"id": "wardrobe", "width": 1.2, "depth": 0.6, "height": 2.0},
+            {"id": "nightstand2", "width": 0.45, "depth": 0.4, "height": 0.55},
+        ],
+        "constraints_text": "bed | edge\n"
+        "nightstand | edge | near, bed | side of, bed\n"
+        "nightstand2 | edge | near, bed | side of, bed\n"
+        "wardrobe | edge",
+    }
+    prep = PreparedRoom(problem_from_data(data))
+    g = prep.grid
+    poses = {
+        0: (round(3.2 / g), round(1.05 / g), 1),
+        1: (round(2.1 / g), round(0.2 / g), 1),
+        2: (round(4.25 / g), round(2.85 / g), 3),
+        3: (round(4.3 / g), round(0.2 / g), 1),
+    }
+    checks, _ = hard_checks(prep, poses)
+    assert checks.ok
+    assert reachable_share(prep, poses) < 0.8
+    opened = open_pockets(prep, poses)
+    assert hard_checks(prep, opened)[0].ok
+    assert reachable_share(prep, opened) >= 0.97
+    kept = satisfied_weight(prep, prep.metres(poses))
+    assert satisfied_weight(prep, prep.metres(opened)) >= kept - 1e-9

@@ -64,13 +64,13 @@ import trimesh
 from asset_pipeline import annotate, physical
 from asset_pipeline.decompose import decompose
 from asset_pipeline.handles import derive_grasp, lever_m
-from asset_pipeline.hulls import postprocess
+from asset_pipeline.hulls import collision_records, postprocess
+from asset_pipeline.importer import visual_records
 from asset_pipeline.kinematics import JointInfo, Kinematics, joint_motion, transformed
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.load import Part
 from asset_pipeline.mjcf_import import check_mjcf, load_mjcf, mjcf_files, root_tag
 from asset_pipeline.normalise import _UP, normalise
-from asset_pipeline.objfile import obj_bytes
 from asset_pipeline.proximity import MeshProximity
 from asset_pipeline.repair import Repaired, repair
 from asset_pipeline.surfaces import _first_hits, support_surfaces
@@ -549,34 +549,8 @@ def _build(
     proximity = MeshProximity(repaired.physics)
     hullset = postprocess(decomposition.hulls, repaired.physics, proximity, repaired.watertight)
     prefix = f"{body.name}_" if body.name else ""
-    visual = []
-    for k, mesh in enumerate(repaired.visuals):
-        name = f"{prefix}visual_{k}.obj"
-        files[name] = obj_bytes(mesh.vertices, mesh.faces, mesh.uv)
-        entry = {"mesh": name, "rgba": list(mesh.material.rgba)}
-        if mesh.material.texture_png is not None:
-            digest = hashlib.sha256(mesh.material.texture_png).hexdigest()
-            if digest not in textures:
-                textures[digest] = f"texture_{len(textures)}.png"
-                files[textures[digest]] = mesh.material.texture_png
-            entry["texture"] = textures[digest]
-        visual.append(entry)
-    collision = []
-    for k, collider in enumerate(hullset.colliders):
-        if collider.kind == "mesh":
-            name = f"{prefix}hull_{k:02d}.obj"
-            files[name] = obj_bytes(collider.vertices, collider.faces)
-            collision.append({"kind": "mesh", "mesh": name, "volume_m3": collider.volume})
-        else:
-            collision.append(
-                {
-                    "kind": "box",
-                    "size": list(collider.size),
-                    "pos": list(collider.pos),
-                    "quat": list(collider.quat),
-                    "volume_m3": collider.volume,
-                }
-            )
+    visual = visual_records(repaired.visuals, files, textures, prefix)
+    collision = collision_records(hullset.colliders, files, prefix)
     body.record.update(visual=visual, collision=collision)
     return _Built(body, repaired, hullset.colliders, decomposition, hullset.quality)
 

@@ -20,13 +20,14 @@ Vertices are rounded as the OBJ writer writes them before volumes are taken, so 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 from scipy.spatial.transform import Rotation
 
-from asset_pipeline.objfile import rounded
+from asset_pipeline.objfile import obj_bytes, rounded
 from asset_pipeline.proximity import MeshProximity
 
 HULL_VERTEX_CAP = 64
@@ -62,6 +63,35 @@ class HullSet:
     colliders: list[Collider]
     maxhullvert: int
     quality: dict
+
+    @property
+    def volume(self) -> float:
+        """The colliders' total volume (m³)."""
+        return sum(c.volume for c in self.colliders)
+
+
+def collision_records(
+    colliders: list[Collider], files: dict[str, bytes], prefix: str = ""
+) -> list[dict[str, Any]]:
+    """The ``collision`` records of ``colliders``; each hull's OBJ goes into ``files`` as
+    ``{prefix}hull_KK.obj`` (K: the collider's index)."""
+    collision: list[dict[str, Any]] = []
+    for k, collider in enumerate(colliders):
+        if collider.kind == "mesh":
+            name = f"{prefix}hull_{k:02d}.obj"
+            files[name] = obj_bytes(collider.vertices, collider.faces)
+            collision.append({"kind": "mesh", "mesh": name, "volume_m3": collider.volume})
+        else:
+            collision.append(
+                {
+                    "kind": "box",
+                    "size": list(collider.size),
+                    "pos": list(collider.pos),
+                    "quat": list(collider.quat),
+                    "volume_m3": collider.volume,
+                }
+            )
+    return collision
 
 
 def postprocess(

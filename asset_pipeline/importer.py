@@ -25,15 +25,16 @@ from __future__ import annotations
 
 import hashlib
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 from pydantic import TypeAdapter, ValidationError
 
 from asset_pipeline import annotate, physical
 from asset_pipeline.decompose import CoacdParams, decompose
-from asset_pipeline.hulls import postprocess
+from asset_pipeline.hulls import collision_records, postprocess
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.load import load_file
 from asset_pipeline.normalise import normalise
@@ -66,6 +67,27 @@ class ImportOptions:
 class ImportedAsset:
     bundle: AssetBundle
     report: dict
+
+
+def visual_records(
+    visuals: Sequence[Any], files: dict[str, bytes], textures: dict[str, str], prefix: str = ""
+) -> list[dict[str, Any]]:
+    """The ``visual`` records of repaired visual meshes; each mesh's OBJ goes into ``files`` as
+    ``{prefix}visual_K.obj`` and each distinct texture once as ``texture_N.png`` (``textures``:
+    its sha256 -> file name, shared by the calls for one asset)."""
+    visual: list[dict[str, Any]] = []
+    for k, mesh in enumerate(visuals):
+        name = f"{prefix}visual_{k}.obj"
+        files[name] = obj_bytes(mesh.vertices, mesh.faces, mesh.uv)
+        entry: dict[str, Any] = {"mesh": name, "rgba": list(mesh.material.rgba)}
+        if mesh.material.texture_png is not None:
+            digest = hashlib.sha256(mesh.material.texture_png).hexdigest()
+            if digest not in textures:
+                textures[digest] = f"texture_{len(textures)}.png"
+                files[textures[digest]] = mesh.material.texture_png
+            entry["texture"] = textures[digest]
+        visual.append(entry)
+    return visual
 
 
 def import_asset(
@@ -110,35 +132,9 @@ def import_asset(
     lap("surfaces")
 
     files: dict[str, bytes] = {}
-    visual, textures = [], {}
-    for k, mesh in enumerate(repaired.visuals):
-        name = f"visual_{k}.obj"
-        files[name] = obj_bytes(mesh.vertices, mesh.faces, mesh.uv)
-        entry = {"mesh": name, "rgba": list(mesh.material.rgba)}
-        if mesh.material.texture_png is not None:
-            digest = hashlib.sha256(mesh.material.texture_png).hexdigest()
-            if digest not in textures:
-                textures[digest] = f"texture_{len(textures)}.png"
-                files[textures[digest]] = mesh.material.texture_png
-            entry["texture"] = textures[digest]
-        visual.append(entry)
-    collision = []
-    for k, collider in enumerate(hullset.colliders):
-        if collider.kind == "mesh":
-            name = f"hull_{k:02d}.obj"
-            files[name] = obj_bytes(collider.vertices, collider.faces)
-            collision.append({"kind": "mesh", "mesh": name, "volume_m3": collider.volume})
-        else:
-            collision.append(
-                {
-                    "kind": "box",
-                    "size": list(collider.size),
-                    "pos": list(collider.pos),
-                    "quat": list(collider.quat),
-                    "volume_m3": collider.volume,
-                }
-            )
-    volume = sum(c.volume for c in hullset.colliders)
+    visual = visual_records(repaired.visuals, files, {})
+    collision = collision_records(hullset.colliders, files)
+    volume = hullset.volume
 
     guessed = physical.guess_category(path)
     if options.category:

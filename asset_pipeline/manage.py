@@ -457,23 +457,41 @@ def process_job(
     A degraded cache entry is reused only with ``accept_fallback``; a new degraded result is
     cached as final only with it, else stored in a pending folder (see the module docstring).
     """
+    return import_cached(
+        JobOutcome(path=str(job.path), asset_id=job.asset_id, ok=False, id_note=job.id_note),
+        cache_root,
+        lambda: cache_key(job.path, options),
+        lambda key: _import_bundle(job, options, key, thumbnails, accept_fallback),
+        accept_fallback,
+    )
+
+
+def import_cached(
+    outcome: JobOutcome,
+    cache_root: Path,
+    key: Callable[[], str],
+    build: Callable[[str], tuple[AssetBundle, dict]],
+    accept_fallback: bool,
+) -> JobOutcome:
+    """Fill ``outcome`` (a new, failed one) for one job: its bundle from the cache entry
+    ``key()``, else ``build(key)`` (bundle, report) stored there (or in a pending folder when
+    degraded and not ``accept_fallback``); a HolomjError becomes the outcome's error."""
     start = time.perf_counter()
-    outcome = JobOutcome(path=str(job.path), asset_id=job.asset_id, ok=False, id_note=job.id_note)
     try:
-        key = cache_key(job.path, options)
-        outcome.cache_key = key
-        cached = load_cached(cache_root, key, job.asset_id)
+        entry_key = key()
+        outcome.cache_key = entry_key
+        cached = load_cached(cache_root, entry_key, outcome.asset_id)
         if cached is not None and (accept_fallback or not cached[1].get("degraded")):
             bundle, report = cached
-            outcome.cached, outcome.entry = True, key
+            outcome.cached, outcome.entry = True, entry_key
         else:
-            bundle, report = _import_bundle(job, options, key, thumbnails, accept_fallback)
+            bundle, report = build(entry_key)
             final = not report["degraded"] or report["fallback_accepted"]
-            outcome.entry = _store_result(cache_root, key, bundle, final)
+            outcome.entry = _store_result(cache_root, entry_key, bundle, final)
         outcome.ok = True
         outcome.degraded = bool(report.get("degraded"))
         outcome.degraded_reason = report.get("degraded_reason")
-        outcome.hulls = sum(1 for c in bundle.meta.collision)
+        outcome.hulls = len(bundle.meta.collision)
         outcome.mass_kg = round(bundle.meta.mass, 4)
     except HolomjError as err:
         outcome.error = err.one_line()
@@ -486,11 +504,21 @@ def _import_bundle(
 ) -> tuple[AssetBundle, dict]:
     """Import ``job``'s file: the bundle (with thumbnails and ``derivation.json``), the report."""
     from asset_pipeline.importer import import_asset
-    from asset_pipeline.thumbnails import with_thumbnails
 
     imported = import_asset(job.path, job.asset_id, options)
+    return finish_bundle(imported, key, thumbnails, accept_fallback)
+
+
+def finish_bundle(
+    imported: Any, key: str, thumbnails: bool, accept_fallback: bool
+) -> tuple[AssetBundle, dict]:
+    """An :class:`~asset_pipeline.importer.ImportedAsset`'s bundle with thumbnails (if
+    ``thumbnails``) and ``derivation.json`` (its report, the cache key, the pipeline version),
+    and that report."""
     bundle = imported.bundle
     if thumbnails:
+        from asset_pipeline.thumbnails import with_thumbnails
+
         bundle = with_thumbnails(bundle)
     report = {
         **imported.report,
@@ -547,47 +575,74 @@ def run_imports(
     cache_root = root / CACHE_DIR
     cache_root.mkdir(parents=True, exist_ok=True)
     _sweep_pending(cache_root)
+    args = (options, cache_root, thumbnails, accept_fallback)
+    summary = run_jobs(
+        jobs, process_job, args, root, workers=workers, on_done=on_done, key=_job_key
+    )
+    if workers > 1 and len(jobs) > 1:  # a parallel run finishes in any order
+        summary.outcomes.sort(key=lambda o: o.path)
+    return summary
+
+
+def _job_key(job: ImportJob) -> tuple[str, str]:
+    return str(job.path), job.asset_id
+
+
+def run_jobs(
+    jobs: Sequence[Any],
+    process: Callable[..., JobOutcome],
+    args: tuple,
+    root: Path,
+    *,
+    workers: int,
+    on_done: Callable[[JobOutcome], None] | None,
+    key: Callable[[Any], tuple[str, str]],
+) -> ImportSummary:
+    """Run ``process(job, *args)`` for every job (in ``workers`` spawned processes when more
+    than one) and commit each success to the library at ``root`` as soon as it is done.
+
+    ``process`` imports one job into the cache under ``root`` (a module-level function, so a
+    worker can run it); ``key(job)`` is the job's (path, asset id). A job whose worker dies is
+    reported as failed and the others go on. The outcomes are in the order they finished.
+    """
+    cache_root = root / CACHE_DIR
     summary = ImportSummary()
 
-    def finish(job: ImportJob, outcome: JobOutcome) -> None:
-        _commit(root, cache_root, job, outcome)
+    def finish(job: Any, outcome: JobOutcome) -> None:
+        _commit(root, cache_root, key(job)[1], outcome)
         summary.outcomes.append(outcome)
         if on_done is not None:
             on_done(outcome)
 
     if workers <= 1 or len(jobs) <= 1:
         for job in jobs:
-            finish(job, process_job(job, options, cache_root, thumbnails, accept_fallback))
+            finish(job, process(job, *args))
         return summary
     context = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-        futures: dict[Future[JobOutcome], ImportJob] = {
-            pool.submit(process_job, job, options, cache_root, thumbnails, accept_fallback): job
-            for job in jobs
+        futures: dict[Future[JobOutcome], Any] = {
+            pool.submit(process, job, *args): job for job in jobs
         }
         for future in as_completed(futures):
             job = futures[future]
             try:
                 outcome = future.result()
             except BrokenProcessPool:
+                path, asset_id = key(job)
                 outcome = JobOutcome(
-                    str(job.path),
-                    job.asset_id,
-                    ok=False,
-                    error="worker process died",
-                    id_note=job.id_note,
+                    path, asset_id, ok=False, error="worker process died", id_note=job.id_note
                 )
             finish(job, outcome)
-    summary.outcomes.sort(key=lambda o: o.path)
     return summary
 
 
-def _commit(root: Path, cache_root: Path, job: ImportJob, outcome: JobOutcome) -> None:
-    """Add a successful outcome's bundle to the library; then drop its pending folder, if any."""
+def _commit(root: Path, cache_root: Path, asset_id: str, outcome: JobOutcome) -> None:
+    """Add a successful outcome's bundle to the library as ``asset_id``; then drop its pending
+    folder, if any."""
     if not outcome.ok or outcome.entry is None:
         return
     try:
-        cached = load_cached(cache_root, outcome.entry, job.asset_id)
+        cached = load_cached(cache_root, outcome.entry, asset_id)
         if cached is None:
             outcome.ok, outcome.error = False, "cache entry vanished before commit"
         else:

@@ -31,14 +31,9 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
-import multiprocessing
 import re
-import secrets
-import shutil
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor, as_completed
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
@@ -46,16 +41,15 @@ from typing import Any, Literal
 import numpy as np
 
 from asset_pipeline.decompose import CoacdParams
-from asset_pipeline.library_writer import AssetBundle, add_assets, dumps_json
+from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.manage import (
     CACHE_DIR,
-    DERIVATION_FILE,
-    PENDING_DIR,
     ImportSummary,
     JobOutcome,
-    load_cached,
+    finish_bundle,
+    import_cached,
     pipeline_version,
-    store_cached,
+    run_jobs,
 )
 from asset_pipeline.objathor import (
     ID_PATTERN,
@@ -67,7 +61,7 @@ from asset_pipeline.objathor import (
     read_mesh,
     unity_to_asset,
 )
-from holomj.errors import FormatError, HolomjError, SpecError
+from holomj.errors import FormatError, SpecError
 
 __all__ = [
     "COLLIDER_MODES",
@@ -103,10 +97,9 @@ def import_objathor_asset(
     """
     from asset_pipeline import annotate, physical
     from asset_pipeline.decompose import decompose
-    from asset_pipeline.hulls import postprocess
-    from asset_pipeline.importer import ImportedAsset
+    from asset_pipeline.hulls import collision_records, postprocess
+    from asset_pipeline.importer import ImportedAsset, visual_records
     from asset_pipeline.normalise import normalise
-    from asset_pipeline.objfile import obj_bytes
     from asset_pipeline.proximity import MeshProximity
     from asset_pipeline.repair import repair
     from asset_pipeline.surfaces import support_surfaces
@@ -181,35 +174,9 @@ def import_objathor_asset(
     lap("surfaces")
 
     files: dict[str, bytes] = {}
-    visual, textures = [], {}
-    for k, vis in enumerate(repaired.visuals):
-        name = f"visual_{k}.obj"
-        files[name] = obj_bytes(vis.vertices, vis.faces, vis.uv)
-        entry: dict[str, Any] = {"mesh": name, "rgba": list(vis.material.rgba)}
-        if vis.material.texture_png is not None:
-            digest = hashlib.sha256(vis.material.texture_png).hexdigest()
-            if digest not in textures:
-                textures[digest] = f"texture_{len(textures)}.png"
-                files[textures[digest]] = vis.material.texture_png
-            entry["texture"] = textures[digest]
-        visual.append(entry)
-    collision: list[dict[str, Any]] = []
-    for k, collider in enumerate(hullset.colliders):
-        if collider.kind == "mesh":
-            name = f"hull_{k:02d}.obj"
-            files[name] = obj_bytes(collider.vertices, collider.faces)
-            collision.append({"kind": "mesh", "mesh": name, "volume_m3": collider.volume})
-        else:
-            collision.append(
-                {
-                    "kind": "box",
-                    "size": list(collider.size),
-                    "pos": list(collider.pos),
-                    "quat": list(collider.quat),
-                    "volume_m3": collider.volume,
-                }
-            )
-    volume = sum(c.volume for c in hullset.colliders)
+    visual = visual_records(repaired.visuals, files, {})
+    collision = collision_records(hullset.colliders, files)
+    volume = hullset.volume
 
     category, category_source = _category(annotation, physical)
     info = physical.category_info(category, frame.size)
@@ -367,31 +334,14 @@ def process_objathor_job(
     accept_fallback: bool = False,
 ) -> JobOutcome:
     """Import one uid into the cache (or find it there); never raises for bad input."""
-    start = time.perf_counter()
-    path = str(job.mesh_file or job.folder)
-    outcome = JobOutcome(path=path, asset_id=job.uid, ok=False, id_note=job.id_note)
-    try:
-        key = cache_key(job, options)
-        outcome.cache_key = key
-        cached = load_cached(cache_root, key, job.uid)
-        if cached is not None and (accept_fallback or not cached[1].get("degraded")):
-            bundle, report = cached
-            outcome.cached, outcome.entry = True, key
-        else:
-            bundle, report = _import_bundle(job, options, key, thumbnails, accept_fallback)
-            final = not report["degraded"] or report["fallback_accepted"]
-            entry = key if final else f"{PENDING_DIR}/{key}-{secrets.token_hex(4)}"
-            store_cached(cache_root, entry, bundle)
-            outcome.entry = entry
-        outcome.ok = True
-        outcome.degraded = bool(report.get("degraded"))
-        outcome.degraded_reason = report.get("degraded_reason")
-        outcome.hulls = len(bundle.meta.collision)
-        outcome.mass_kg = round(bundle.meta.mass, 4)
-    except HolomjError as err:
-        outcome.error = err.one_line()
-    outcome.seconds = round(time.perf_counter() - start, 3)
-    return outcome
+    path, uid = _job_key(job)
+    return import_cached(
+        JobOutcome(path=path, asset_id=uid, ok=False, id_note=job.id_note),
+        cache_root,
+        lambda: cache_key(job, options),
+        lambda key: _import_bundle(job, options, key, thumbnails, accept_fallback),
+        accept_fallback,
+    )
 
 
 def _import_bundle(
@@ -412,19 +362,7 @@ def _import_bundle(
             annotation = dataclasses.replace(annotation, warnings=(*annotation.warnings, note))
     mesh = read_mesh(job.mesh_file, options.max_faces)
     imported = import_objathor_asset(job.uid, mesh, annotation, options)
-    bundle = imported.bundle
-    if thumbnails:
-        from asset_pipeline.thumbnails import with_thumbnails
-
-        bundle = with_thumbnails(bundle)
-    report = {
-        **imported.report,
-        "fallback_accepted": bool(imported.report["degraded"] and accept_fallback),
-        "cache_key": key,
-        "pipeline_version": pipeline_version(),
-    }
-    files = {**bundle.files, DERIVATION_FILE: dumps_json(report)}
-    return AssetBundle(meta=bundle.meta, files=files), report
+    return finish_bundle(imported, key, thumbnails, accept_fallback)
 
 
 def run_objathor_imports(
@@ -444,55 +382,14 @@ def run_objathor_imports(
     that fails is reported and the others go on.
     """
     root = Path(library_root)
-    cache_root = root / CACHE_DIR
-    cache_root.mkdir(parents=True, exist_ok=True)
-    summary = ImportSummary()
-
-    def finish(job: ObjathorJob, outcome: JobOutcome) -> None:
-        _commit(root, cache_root, job, outcome)
-        summary.outcomes.append(outcome)
-        if on_done is not None:
-            on_done(outcome)
-
-    if workers <= 1 or len(jobs) <= 1:
-        for job in jobs:
-            finish(job, process_objathor_job(job, options, cache_root, thumbnails, accept_fallback))
-    else:
-        context = multiprocessing.get_context("spawn")
-        with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-            futures: dict[Future[JobOutcome], ObjathorJob] = {
-                pool.submit(
-                    process_objathor_job, job, options, cache_root, thumbnails, accept_fallback
-                ): job
-                for job in jobs
-            }
-            for future in as_completed(futures):
-                job = futures[future]
-                try:
-                    outcome = future.result()
-                except BrokenProcessPool:
-                    outcome = JobOutcome(
-                        str(job.mesh_file or job.folder),
-                        job.uid,
-                        ok=False,
-                        error="worker process died",
-                        id_note=job.id_note,
-                    )
-                finish(job, outcome)
+    (root / CACHE_DIR).mkdir(parents=True, exist_ok=True)
+    args = (options, root / CACHE_DIR, thumbnails, accept_fallback)
+    summary = run_jobs(
+        jobs, process_objathor_job, args, root, workers=workers, on_done=on_done, key=_job_key
+    )
     summary.outcomes.sort(key=lambda o: o.asset_id)
     return summary
 
 
-def _commit(root: Path, cache_root: Path, job: ObjathorJob, outcome: JobOutcome) -> None:
-    """Add a successful outcome's bundle to the library; then drop its pending folder."""
-    if not outcome.ok or outcome.entry is None:
-        return
-    try:
-        cached = load_cached(cache_root, outcome.entry, job.uid)
-        if cached is None:
-            outcome.ok, outcome.error = False, "cache entry vanished before commit"
-        else:
-            add_assets(root, [cached[0]])
-    finally:
-        if outcome.entry.startswith(f"{PENDING_DIR}/"):
-            shutil.rmtree(cache_root / outcome.entry, ignore_errors=True)
+def _job_key(job: ObjathorJob) -> tuple[str, str]:
+    return str(job.mesh_file or job.folder), job.uid

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -15,6 +16,24 @@ from holomj.cli.options import JsonOption, LibraryOption, StrictOption
 from holomj.cli.output import emit_json, err_console, guard, library_root, out_console
 
 assets_app = typer.Typer(help="Manage asset libraries.", no_args_is_help=True)
+
+# the options both import commands take
+WorkersOption = Annotated[int, typer.Option(min=1, max=64, help="Parallel processes.")]
+PresetOption = Annotated[
+    str, typer.Option(help="CoACD settings: fast (seconds), default, fine (minutes).")
+]
+TimeoutOption = Annotated[float | None, typer.Option(help="CoACD time limit per attempt, seconds.")]
+ThumbnailsOption = Annotated[
+    bool, typer.Option("--thumbnails/--no-thumbnails", help="Render thumbnails.")
+]
+AcceptFallbackOption = Annotated[
+    bool,
+    typer.Option(
+        "--accept-fallback",
+        help="Cache fallback decompositions (CoACD unavailable, crashed or timed out) as "
+        "final and reuse cached ones; without it the next import retries CoACD.",
+    ),
+]
 
 
 @assets_app.command("build-default")
@@ -57,28 +76,15 @@ def import_command(
         typer.Option(help="Up axis of the file: y or z (default: y for glTF, z otherwise)."),
     ] = None,
     front: Annotated[str, typer.Option(help="Source axis the front faces: +x, -x, +y, -y.")] = "+x",
-    workers: Annotated[int, typer.Option(min=1, max=64, help="Parallel processes.")] = 1,
-    preset: Annotated[
-        str, typer.Option(help="CoACD settings: fast (seconds), default, fine (minutes).")
-    ] = "default",
+    workers: WorkersOption = 1,
+    preset: PresetOption = "default",
     threshold: Annotated[
         float | None, typer.Option(help="CoACD concavity threshold (lower = more hulls).")
     ] = None,
     max_hulls: Annotated[int | None, typer.Option(help="CoACD maximum number of hulls.")] = None,
-    timeout: Annotated[
-        float | None, typer.Option(help="CoACD time limit per attempt, seconds.")
-    ] = None,
-    thumbnails: Annotated[
-        bool, typer.Option("--thumbnails/--no-thumbnails", help="Render thumbnails.")
-    ] = True,
-    accept_fallback: Annotated[
-        bool,
-        typer.Option(
-            "--accept-fallback",
-            help="Cache fallback decompositions (CoACD unavailable, crashed or timed out) as "
-            "final and reuse cached ones; without it the next import retries CoACD.",
-        ),
-    ] = False,
+    timeout: TimeoutOption = None,
+    thumbnails: ThumbnailsOption = True,
+    accept_fallback: AcceptFallbackOption = False,
     strict: StrictOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -94,45 +100,31 @@ def import_command(
     """
     from holomj.jobs.assets import import_assets
 
-    columns = (
-        TextColumn("[progress.description]{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
+    _run_import(
+        lambda on_planned, on_done: import_assets(
+            paths,
+            library=library,
+            asset_id=asset_id,
+            category=category,
+            size=size,
+            description=description,
+            mass_kg=mass,
+            up=up,
+            front=front,
+            preset=preset,
+            threshold=threshold,
+            max_hulls=max_hulls,
+            timeout_s=timeout,
+            workers=workers,
+            thumbnails=thumbnails,
+            accept_fallback=accept_fallback,
+            on_planned=on_planned,
+            on_done=on_done,
+        ),
+        as_json=as_json,
+        accept_fallback=accept_fallback,
+        strict=strict,
     )
-    with Progress(*columns, console=err_console, disable=as_json, transient=True) as progress:
-        task = progress.add_task("importing", total=None)
-        result = guard(
-            lambda: import_assets(
-                paths,
-                library=library,
-                asset_id=asset_id,
-                category=category,
-                size=size,
-                description=description,
-                mass_kg=mass,
-                up=up,
-                front=front,
-                preset=preset,
-                threshold=threshold,
-                max_hulls=max_hulls,
-                timeout_s=timeout,
-                workers=workers,
-                thumbnails=thumbnails,
-                accept_fallback=accept_fallback,
-                on_planned=lambda total: progress.update(task, total=total),
-                on_done=lambda outcome: progress.update(
-                    task, advance=1, description=outcome.asset_id
-                ),
-            )
-        )
-    summary = result.summary
-    if as_json:
-        emit_json(result.to_dict())
-    else:
-        _print_summary(result.library, summary, accept_fallback)
-    if summary.failed or (strict and summary.degraded):
-        raise typer.Exit(code=1)
 
 
 @assets_app.command("import-objathor")
@@ -158,24 +150,11 @@ def import_objathor_command(
             "coacd: decompose with CoACD."
         ),
     ] = "shipped",
-    workers: Annotated[int, typer.Option(min=1, max=64, help="Parallel processes.")] = 1,
-    preset: Annotated[
-        str, typer.Option(help="CoACD settings: fast (seconds), default, fine (minutes).")
-    ] = "default",
-    timeout: Annotated[
-        float | None, typer.Option(help="CoACD time limit per attempt, seconds.")
-    ] = None,
-    thumbnails: Annotated[
-        bool, typer.Option("--thumbnails/--no-thumbnails", help="Render thumbnails.")
-    ] = True,
-    accept_fallback: Annotated[
-        bool,
-        typer.Option(
-            "--accept-fallback",
-            help="Cache fallback decompositions (CoACD unavailable, crashed or timed out) as "
-            "final and reuse cached ones; without it the next import retries CoACD.",
-        ),
-    ] = False,
+    workers: WorkersOption = 1,
+    preset: PresetOption = "default",
+    timeout: TimeoutOption = None,
+    thumbnails: ThumbnailsOption = True,
+    accept_fallback: AcceptFallbackOption = False,
     strict: StrictOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -190,6 +169,38 @@ def import_objathor_command(
     """
     from holomj.jobs.objathor import import_objathor, parse_uids
 
+    _run_import(
+        lambda on_planned, on_done: import_objathor(
+            directory,
+            library=library,
+            uids=parse_uids(uids),
+            colliders=colliders,
+            preset=preset,
+            timeout_s=timeout,
+            workers=workers,
+            thumbnails=thumbnails,
+            accept_fallback=accept_fallback,
+            on_planned=on_planned,
+            on_done=on_done,
+        ),
+        as_json=as_json,
+        accept_fallback=accept_fallback,
+        strict=strict,
+        full_errors=True,
+    )
+
+
+def _run_import(
+    start: Callable[[Callable[[int], None], Callable[[Any], None]], Any],
+    *,
+    as_json: bool,
+    accept_fallback: bool,
+    strict: bool,
+    full_errors: bool = False,
+) -> None:
+    """Run an import job, ``start(on_planned, on_done)``, under a progress bar; then print its
+    summary (and, with ``full_errors``, each failure's whole error) or emit it as JSON, and
+    exit with 1 when any failed (or, with ``strict``, was degraded)."""
     columns = (
         TextColumn("[progress.description]{task.description}"),
         BarColumn(),
@@ -199,20 +210,9 @@ def import_objathor_command(
     with Progress(*columns, console=err_console, disable=as_json, transient=True) as progress:
         task = progress.add_task("importing", total=None)
         result = guard(
-            lambda: import_objathor(
-                directory,
-                library=library,
-                uids=parse_uids(uids),
-                colliders=colliders,
-                preset=preset,
-                timeout_s=timeout,
-                workers=workers,
-                thumbnails=thumbnails,
-                accept_fallback=accept_fallback,
-                on_planned=lambda total: progress.update(task, total=total),
-                on_done=lambda outcome: progress.update(
-                    task, advance=1, description=outcome.asset_id
-                ),
+            lambda: start(
+                lambda total: progress.update(task, total=total),
+                lambda outcome: progress.update(task, advance=1, description=outcome.asset_id),
             )
         )
     summary = result.summary
@@ -220,8 +220,9 @@ def import_objathor_command(
         emit_json(result.to_dict())
     else:
         _print_summary(result.library, summary, accept_fallback)
-        for o in summary.failed:  # the whole error, unwrapped, whatever the table cut
-            err_console.print(f"error: {o.asset_id}: {o.error}", markup=False, soft_wrap=True)
+        if full_errors:
+            for o in summary.failed:  # the whole error, unwrapped, whatever the table cut
+                err_console.print(f"error: {o.asset_id}: {o.error}", markup=False, soft_wrap=True)
     if summary.failed or (strict and summary.degraded):
         raise typer.Exit(code=1)
 

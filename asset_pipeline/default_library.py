@@ -26,11 +26,23 @@ PROCEDURAL_SOURCE = "holomj procedural"
 STALE_SOURCES = frozenset({PROCEDURAL_SOURCE, "holomj synthesised", "holomj proxy"})
 
 
-ARTICULATED_BY_DEFAULT = False
-"""The one-line switch to articulated furniture: when True, the default library is built as its
-articulated variant (:func:`asset_pipeline.procedural.articulated.library_assets`: cabinets,
-wardrobes, dressers, appliances... with doors, drawers and lids on real joints) and retrieval
-picks those for every scene. Off for now: ``generate`` makes exactly what it made before."""
+ARTICULATED_BY_DEFAULT = True
+"""The one-line switch to articulated furniture: when True (the default), the default library
+is built as its articulated variant (:func:`asset_pipeline.procedural.articulated.
+library_assets`: counters, cabinets, wardrobes, dressers, appliances... with doors, drawers and
+lids on real joints), retrieval picks those for every scene and synthesis on demand makes
+articulated assets of those categories (:func:`articulated_synthesis`). False gives the rigid
+library of before."""
+
+
+def articulated_synthesis(category: str) -> bool:
+    """True when assets of ``category`` made on demand are articulated: the switch is on and
+    the articulated library holds the category articulated."""
+    if not ARTICULATED_BY_DEFAULT:
+        return False
+    from asset_pipeline.procedural.articulated import in_library
+
+    return in_library(category)
 
 
 def ensure_default_library(

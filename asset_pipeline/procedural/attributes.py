@@ -977,16 +977,27 @@ def conditioned_design(
 
 
 def parts_report(
-    category: str, size: Vec3 | None, seed: int, attributes: Attributes
+    category: str,
+    size: Vec3 | None,
+    seed: int,
+    attributes: Attributes,
+    *,
+    articulated: bool = False,
 ) -> dict[str, str]:
     """How each part request of ``attributes`` is honoured by the asset ``generate_asset``
-    builds of ``category`` at ``size`` in style ``seed`` (the design only, nothing assembled):
-    role -> ``"brass on the handles (8 parts)"`` or ``"not honoured: ..."``."""
+    (``generate_articulated`` when ``articulated``) builds of ``category`` at ``size`` in style
+    ``seed`` (the design only, nothing assembled): role -> ``"brass on the handles (8
+    parts)"`` or ``"not honoured: ..."``."""
     if not attributes.parts:
         return {}
-    from asset_pipeline.procedural.registry import category_info
+    if articulated:
+        from asset_pipeline.procedural.articulated import articulated_info
 
-    info = category_info(category)
+        info = articulated_info(category)
+    else:
+        from asset_pipeline.procedural.registry import category_info
+
+        info = category_info(category)
     return condition(info, info.check_size(size), seed, attributes).parts_report
 
 

@@ -89,6 +89,7 @@ from holomj.importers.thor_assets import (
     thor_category,
     thor_stand_ins,
     thor_type,
+    thor_type_opens,
     thor_type_size,
 )
 from holomj.library.store import AssetLibrary
@@ -512,6 +513,7 @@ class _ProcthorImport(ImportState):
             fit=size_source == "thor",
             stand_ins=kind.stand_ins,
             size_source=size_source,
+            prefer_articulated=kind.can_open,
         )
         if warning:
             self.warnings.append(f"{node.path}: {warning}")
@@ -663,13 +665,15 @@ def _hole(node: Node) -> tuple[float, float, float, float]:
 
 @dataclass(frozen=True)
 class _Kind:
-    """What an object is: its holomj category, categories that may stand in for it, and its
-    source size (x = depth, y = width, z = height, own frame) with where that came from."""
+    """What an object is: its holomj category, categories that may stand in for it, its
+    source size (x = depth, y = width, z = height, own frame) with where that came from, and
+    whether it opens (THOR's ``CanOpen``: an articulated stand-in is preferred)."""
 
     category: str
     stand_ins: tuple[str, ...] = ()
     size: tuple[float, float, float] | None = None
     size_source: str | None = None
+    can_open: bool = False
 
 
 _NOT_A_TYPE = {"small", "surface", "exterior", "object"}
@@ -704,28 +708,28 @@ def _kind(node: Node, raw_id: str, asset: str) -> _Kind:
     if name is not None:
         text = _INSTANCE_SUFFIX.sub("", name.string()).strip()
         if thor is not None:
-            return _Kind(text, size=thor.size, size_source="thor")
+            return _Kind(text, size=thor.size, size_source="thor", can_open=thor.can_open)
         return _Kind(text)
     if thor is not None:
-        return _thor_kind(thor.type, thor.size, "thor")
+        return _thor_kind(thor.type, thor.size, "thor", thor.can_open)
     first = _INSTANCE_SUFFIX.sub("", raw_id.split("|", 1)[0]).strip()
     word = first if _is_word(first) else ""
     thor_name = _type_from_asset_id(asset) or (thor_type(word) if word else None)
     if thor_name is not None:
         size = category_size(thor_name) or category_size(thor_category(thor_name) or "")
         size = size or thor_type_size(thor_name)
-        return _thor_kind(thor_name, size, "category" if size else None)
+        return _thor_kind(thor_name, size, "category" if size else None, thor_type_opens(thor_name))
     text = word or (asset.split("_", 1)[0] if asset else "") or "object"
     size = category_size(text)
     return _Kind(text, size=size, size_source="category" if size else None)
 
 
 def _thor_kind(
-    thor_name: str, size: tuple[float, float, float] | None, source: str | None
+    thor_name: str, size: tuple[float, float, float] | None, source: str | None, opens: bool
 ) -> _Kind:
     # The THOR type itself comes last: a library may file assets under THOR's names ("Chair").
     category = thor_category(thor_name) or thor_name
-    return _Kind(category, (*thor_stand_ins(thor_name), thor_name), size, source)
+    return _Kind(category, (*thor_stand_ins(thor_name), thor_name), size, source, opens)
 
 
 def _is_word(text: str) -> bool:

@@ -32,6 +32,11 @@ size and where that size came from.
 
 Without fitting (SceneDef imports), the closest asset is used at scale 1, a 90° turn allowed in
 the comparison as in :meth:`AssetLibrary.closest`.
+
+Objects that open (``prefer_articulated``: THOR's ``CanOpen`` fridges, boxes, dryers...) first
+look for an *articulated* asset (doors, drawers or lids on joints) among all those categories,
+in the same order and with the same limits, and take the ordinary choice only when none fits:
+an opening original gets a stand-in that opens whenever the library has one.
 """
 
 from __future__ import annotations
@@ -148,12 +153,14 @@ def choose_asset(
     fit: bool = False,
     stand_ins: tuple[str, ...] = (),
     size_source: str | None = None,
+    prefer_articulated: bool = False,
 ) -> tuple[AssetChoice, str | None]:
     """Pick the asset for an object; also returns a warning when the size had to be guessed.
 
     ``fit``: scale a stand-in to ``size`` (see the module notes); ``stand_ins``: further
     categories to try after the category and its aliases; ``size_source``: where ``size`` came
-    from, for the substitution record.
+    from, for the substitution record; ``prefer_articulated``: the original opens, so an
+    articulated asset of any of the categories goes first (see the module notes).
     """
     if requested and requested in library:
         return AssetChoice(requested, 1.0, library.get(requested).meta.size[2], None), None
@@ -184,37 +191,58 @@ def choose_asset(
 
     names = candidate_categories(category, stand_ins) if category else []
     missed: tuple[float, str, tuple[float, float, float]] | None = None
-    for name in names:
-        candidates = [a for a in library.by_category(name) if a.meta.id != BUILTIN_BOX]
-        if not candidates:
-            continue
-        if not fit:
-            stand_in = min(candidates, key=lambda a: (size_distance(a.meta.size, size), a.meta.id))
-            reason = "not in library; same category, closest size"
-            if normalise_category(name) != normalise_category(category):
-                reason = f"not in library; stand-in of category {name!r}, closest size"
-            sub = substitution(stand_in.meta.id, reason, 1.0)
-            return AssetChoice(stand_in.meta.id, 1.0, stand_in.meta.size[2], sub), warning
-        fitting = []
-        for asset in candidates:
-            for turn in (0.0, 90.0) if _may_turn(asset) else (0.0,):
-                own = _turned(asset.meta.size, turn)
-                distance = straight_distance(own, size)
-                scale = fit_scale(own, size)
-                if scale is not None:
-                    fitting.append((turn, distance, asset.meta.id, asset, _turned(scale, turn)))
-                elif turn == 0.0 and (missed is None or distance < missed[0]):
-                    missed = (distance, asset.meta.id, _raw_scale(own, size))
-        if fitting:
-            turn, _, asset_id, asset, scale = min(fitting, key=lambda f: f[:3])
+
+    def search(articulated_only: bool) -> AssetChoice | None:
+        nonlocal missed
+        for name in names:
+            candidates = [
+                a
+                for a in library.by_category(name)
+                if a.meta.id != BUILTIN_BOX and (a.meta.articulated or not articulated_only)
+            ]
+            if not candidates:
+                continue
             same = normalise_category(name) == normalise_category(category)
-            what = "same category" if same else f"stand-in of category {name!r}"
-            turned = ", turned 90°" if turn else ""
-            reason = f"not in library; {what}, scaled to the source size{turned}"
-            used = compact_scale(scale)
-            height = round(asset.meta.size[2] * scale[2], 9)
-            sub = substitution(asset_id, reason, used, turn)
-            return AssetChoice(asset_id, used, height, sub, turn), warning
+            what = "same category, " if same else f"stand-in of category {name!r}, "
+            if articulated_only and same:
+                what = "same category, articulated (the original opens), "
+            elif articulated_only:
+                what = f"articulated stand-in of category {name!r} (the original opens), "
+            if not fit:
+                stand_in = min(
+                    candidates, key=lambda a: (size_distance(a.meta.size, size), a.meta.id)
+                )
+                reason = f"not in library; {what}closest size"
+                sub = substitution(stand_in.meta.id, reason, 1.0)
+                return AssetChoice(stand_in.meta.id, 1.0, stand_in.meta.size[2], sub)
+            fitting = []
+            for asset in candidates:
+                for turn in (0.0, 90.0) if _may_turn(asset) else (0.0,):
+                    own = _turned(asset.meta.size, turn)
+                    distance = straight_distance(own, size)
+                    scale = fit_scale(own, size)
+                    if scale is not None:
+                        fitting.append((turn, distance, asset.meta.id, asset, _turned(scale, turn)))
+                    elif (
+                        not articulated_only
+                        and turn == 0.0
+                        and (missed is None or distance < missed[0])
+                    ):
+                        missed = (distance, asset.meta.id, _raw_scale(own, size))
+            if fitting:
+                turn, _, asset_id, asset, scale = min(fitting, key=lambda f: f[:3])
+                turned = ", turned 90°" if turn else ""
+                reason = f"not in library; {what}scaled to the source size{turned}"
+                used = compact_scale(scale)
+                height = round(asset.meta.size[2] * scale[2], 9)
+                sub = substitution(asset_id, reason, used, turn)
+                return AssetChoice(asset_id, used, height, sub, turn)
+        return None
+
+    for articulated_only in (True, False) if prefer_articulated else (False,):
+        found = search(articulated_only)
+        if found is not None:
+            return found, warning
     if missed is not None:
         factors = ", ".join(f"{s:g}" for s in missed[2])
         reason = (

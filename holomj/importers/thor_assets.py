@@ -115,6 +115,13 @@ def thor_stand_ins(thor_type_name: str) -> tuple[str, ...]:
 
 
 @cache
+def thor_type_opens(thor_type_name: str) -> bool:
+    """Whether assets of a THOR type open (``CanOpen``: most of its assets do)."""
+    flags = [a.can_open for a in thor_assets().values() if a.type == thor_type_name]
+    return bool(flags) and 2 * sum(flags) >= len(flags)
+
+
+@cache
 def thor_type_size(thor_type_name: str) -> Size | None:
     """A typical size of a THOR type: the per-axis median over its assets (holomj frame)."""
     sizes = [a.size for a in thor_assets().values() if a.type == thor_type_name]

@@ -2,7 +2,8 @@
 
 Stages, each timed in the log: plan (offline knowledge base, or an LLM with the offline planner
 as fallback) -> retrieve + layout per room (floor plan, doors, windows, materials, furniture,
-wall objects) -> small objects (spawn-and-drop) -> compile -> validate -> export (atomic) ->
+wall objects) -> small objects (spawn-and-drop: on top of receptacles, and inside articulated
+storage with ``GenerateOptions.inside``) -> compile -> validate -> export (atomic) ->
 render (optional, after the export; a failed render is recorded and leaves the scene intact).
 The scene is compiled once: validation, export and render use that model in memory.
 
@@ -80,6 +81,9 @@ class GenerateOptions:
     furniture: Literal["free", "static"] = "free"
     robot: str | None = None  # registry name or MJCF path, attached before validation
     profile: str = "default"  # compile profile: default or mjx
+    # articulated storage (fridges, cabinets, drawers) also gets small objects inside
+    # (holomj.physics.small_object_drops: holomj/data/small_objects_inside.json)
+    inside: bool = True
 
     def plan_options(self) -> PlanOptions:
         """The subset of these options the plan stage reads."""
@@ -334,13 +338,19 @@ class _Run:
         with self.log.stage("small_objects"):
             receptacles = [rec for r in self.furnished for rec in r.receptacles]
             small = drop_small_objects(
-                self.scene, receptacles, self.library, self.retriever, self.seed
+                self.scene,
+                receptacles,
+                self.library,
+                self.retriever,
+                self.seed,
+                inside=self.options.inside,
             )
             self.scene = _mark_proxies(small.scene, self.library)
             self.log.info(
                 "small_objects",
                 f"{small.placed}/{small.requested} small object(s) dropped on "
-                f"{len(receptacles)} receptacle(s)",
+                f"{len(receptacles)} receptacle(s)"
+                + (f", {small.inside} of them inside furniture" if small.inside else ""),
             )
             for rec in small.receptacles:
                 for failure in rec["failures"]:

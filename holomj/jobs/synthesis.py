@@ -2,12 +2,15 @@
 
 :func:`synthesise` builds an asset of a registered procedural category at a target size, style
 seed and attributes (colour, material, shape, style, and colours or materials of parts such as
-"brass handles": :mod:`asset_pipeline.procedural.attributes`);
+"brass handles": :mod:`asset_pipeline.procedural.attributes`), with its articulated generator
+(doors, drawers and lids on joints) when the default library holds the category articulated
+(``asset_pipeline.default_library.articulated_synthesis``: on by default);
 :func:`synthesise_proxy` builds a proxy (:mod:`asset_pipeline.procedural.proxies`) for a
 category no generator makes. Both write the asset into the library under a **content-addressed
 id**, ``<category>_<hash12>``: the hash covers the kind (asset or proxy), the category, the size
 (to the millimetre), the seed, the attributes, the placement and the generators' version
-(``DEFAULT_LIBRARY_VERSION``). An asset already there is reused, never rewritten; a new one is
+(``DEFAULT_LIBRARY_VERSION``; ``ARTICULATED_VERSION`` and a flag for an articulated asset).
+An asset already there is reused, never rewritten; a new one is
 built outside the lock, then added under the library's lock (``add_assets``: written into a
 temporary folder and renamed, the index replaced in one rename), after checking again that no
 other process added it meanwhile, so two batch workers synthesising the same asset leave one.
@@ -94,11 +97,24 @@ def recorded_attributes(asset: LibraryAsset) -> dict[str, str]:
     return parse_attributes(asset.meta.description, asset.meta.category)
 
 
-def fit_size(category: str, size: Size | None) -> tuple[Size, list[str]]:
-    """``size`` (x, y, z) clamped into the category's valid range and ratios, with notes."""
+def _generator_info(category: str) -> tuple[Any, bool]:
+    """(the CategoryInfo that makes ``category`` on demand, whether it is articulated): the
+    articulated generator when the default library holds the category articulated
+    (``asset_pipeline.default_library.articulated_synthesis``), else the rigid one."""
+    from asset_pipeline.default_library import articulated_synthesis
     from asset_pipeline.procedural import category_info
 
     info = category_info(category)
+    if articulated_synthesis(info.name):
+        from asset_pipeline.procedural.articulated import articulated_info
+
+        return articulated_info(info.name), True
+    return info, False
+
+
+def fit_size(category: str, size: Size | None) -> tuple[Size, list[str]]:
+    """``size`` (x, y, z) clamped into the category's valid range and ratios, with notes."""
+    info, _ = _generator_info(category)
     if size is None:
         return info.default_size, []
     x, y, z = (float(v) for v in size)
@@ -131,10 +147,11 @@ def synthesise(
 ) -> Synthesis:
     """The asset of registered procedural ``category`` at ``size`` (x, y, z; None: default) in
     style ``seed`` with ``attributes``, in the library at ``root`` (written if new)."""
-    from asset_pipeline.procedural import DEFAULT_LIBRARY_VERSION, category_info, generate_asset
+    from asset_pipeline.procedural import DEFAULT_LIBRARY_VERSION, generate_asset
     from asset_pipeline.procedural.attributes import Attributes, parts_report
 
-    name = category_info(category).name
+    info, articulated = _generator_info(category)
+    name = info.name
     fitted, notes = fit_size(name, size)
     wanted = Attributes.from_dict(attributes)
     key = {
@@ -145,10 +162,20 @@ def synthesise(
         "attributes": wanted.key(),
         "version": DEFAULT_LIBRARY_VERSION,
     }
+    if articulated:
+        from asset_pipeline.procedural.articulated import ARTICULATED_VERSION
+
+        key["version"] = ARTICULATED_VERSION
+        key["articulated"] = True
     asset_id = f"{name}_{_hash(key)}"
 
     def build() -> Any:
-        bundle = generate_asset(name, asset_id, fitted, int(seed), wanted)
+        if articulated:
+            from asset_pipeline.procedural.articulated import generate_articulated
+
+            bundle = generate_articulated(name, asset_id, fitted, int(seed), wanted)
+        else:
+            bundle = generate_asset(name, asset_id, fitted, int(seed), wanted)
         return _on_demand(bundle, SYNTHESISED_SOURCE)
 
     folder, reused, meta = _store(Path(root), asset_id, build)
@@ -164,7 +191,7 @@ def synthesise(
         library=Path(root),
         notes=tuple(notes),
         folder=folder,
-        parts_how=parts_report(name, fitted, int(seed), wanted),
+        parts_how=parts_report(name, fitted, int(seed), wanted, articulated=articulated),
     )
 
 

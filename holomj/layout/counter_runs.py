@@ -9,13 +9,16 @@ neighbours :data:`JOIN_GAP_M` apart):
 * ``one_wall``: one leg;
 * ``galley``: two legs on opposite walls, facing each other across an aisle of at least
   :data:`AISLE_M`;
-* ``L``: two legs on the two walls of a convex corner: the *corner leg*'s end module covers the
-  corner square, the other leg starts at its front (they meet without overlapping);
+* ``L``: two legs on the two walls of a convex corner: the *corner leg* owns the corner square
+  and leaves it empty (a dead corner under no module: a module there would have the other leg
+  standing in front of its doors, which could then not open), the other leg starts at the
+  corner leg's front (they meet without overlapping and every front stays free);
 * ``U``: three legs on three walls in a row, each of its two junctions an L's (either leg may
-  cover the corner): the middle leg is laid from one junction and may stop at most
+  own the corner): the middle leg is laid from one junction and may stop at most
   :data:`FILLER_MAX_M` short of the other (a filler strip in a real kitchen: ``filler_m``).
 
-The end legs of an L or a U reach at least :data:`MIN_ARM_M` past their corner square.
+The end legs of an L or a U reach at least :data:`MIN_ARM_M` past their corner square. A corner
+leg's length (:meth:`Arrangement.leg_length`) includes the corner squares it owns.
 
 How it is solved: every leg becomes one composite :class:`LayoutObject` (width: the sum of its
 modules' widths, depth: the deepest module, height: the tallest) that the room's solver places
@@ -112,6 +115,7 @@ MAX_MODULES = 8  # more modules than this are laid out independently
 MAX_FIT_TRIALS = 400  # arrangements tried against the room's walls per shape
 GOOD_SLACK_M = 0.15  # free wall beyond a leg that makes a fit comfortable
 MIN_ARM_M = 0.4  # an end leg of an L or a U reaches at least this far past its corner square
+FRONT_BAND_M = 0.3  # the floor in front of a module next to a dead corner the other leg keeps
 MAX_ORDER_COMBOS = 64  # equally cheap orders of the legs compared for the sink's window
 EPS = 1e-6
 LEG_PREFIX = "counter run "
@@ -193,9 +197,20 @@ class Arrangement:
         return leg_ends(self.shape, self.owners)[k]
 
     def leg_length(self, k: int) -> float:
-        """Length of leg ``k`` along its wall, neighbours :data:`JOIN_GAP_M` apart."""
+        """Length of leg ``k`` along its wall, neighbours :data:`JOIN_GAP_M` apart, with the
+        corner squares it owns (:meth:`corner_square`)."""
         leg = self.legs[k]
-        return sum(m.width for m in leg) + JOIN_GAP_M * (len(leg) - 1)
+        return sum(m.width for m in leg) + JOIN_GAP_M * (len(leg) - 1) + self.corner_square(k)
+
+    def corner_square(self, k: int) -> float:
+        """The length of wall leg ``k`` leaves empty at the corners it owns: per corner, the
+        other leg's depth and a gap (a dead corner, so that no module stands with the other
+        leg in front of its doors)."""
+        total = 0.0
+        for j, owner in enumerate(self.owners):  # junction j joins legs j and j + 1
+            if owner == k:
+                total += self.leg_depth(j + 1 if owner == j else j) + JOIN_GAP_M
+        return total
 
     def leg_depth(self, k: int) -> float:
         """The deepest module of leg ``k``."""
@@ -508,10 +523,16 @@ def _stretch(start: float, direction: int, seq: Sequence[RunModule]) -> list[Spa
     return out
 
 
-def _depth_near(spans: Sequence[Span], corner: float, reach: float) -> float:
-    """The deepest module within ``reach`` of ``corner`` (a distance along the wall)."""
-    near = [m.depth for m, a0, a1 in spans if a0 < corner + reach and a1 > corner - reach]
-    return max(near, default=0.0)
+def _near_end(seq: Sequence[RunModule], extent: float) -> float:
+    """The deepest of the modules ``seq`` (in order from one end of a leg) that start within
+    ``extent`` of that end, neighbours :data:`JOIN_GAP_M` apart."""
+    at, deepest = 0.0, 0.0
+    for module in seq:
+        if at >= extent - EPS:
+            break
+        deepest = max(deepest, module.depth)
+        at += module.width + JOIN_GAP_M
+    return deepest
 
 
 def chain_layout(
@@ -521,8 +542,9 @@ def chain_layout(
     orders: Sequence[tuple[RunModule, ...]],
 ) -> ChainLayout | str:
     """The L or U of ``arr`` (legs in ``orders``) laid on consecutive ``walls``: each corner leg
-    from its corner, each other leg from the front of the corner leg it abuts; or why not (a
-    U's middle leg too long for its wall, or more than :data:`FILLER_MAX_M` short)."""
+    from its corner square (left empty: :meth:`Arrangement.corner_square`), each other leg
+    from the front of the corner leg it abuts; or why not (a U's middle leg too long for its
+    wall, or more than :data:`FILLER_MAX_M` short)."""
     ws = space.walls
     ccw = walls[1] == (walls[0] + 1) % len(ws)
     d = 1 if ccw else -1  # chain direction along every wall of the chain
@@ -540,31 +562,43 @@ def chain_layout(
         return _stretch(end, -d, orders[k][::-1])[::-1]
 
     legs: list[list[Span]] = [[] for _ in walls]
-    reach = [arr.leg_depth(k) + JOIN_GAP_M for k in range(len(walls))]
+    gap = JOIN_GAP_M
+
+    def square(owner: int, other: int, other_from_junction: Sequence[RunModule]) -> float:
+        """The side of the empty corner square the owner leaves: the depth of the other leg's
+        modules that meet the owner's front band there, and a gap."""
+        extent = arr.leg_depth(owner) + gap + FRONT_BAND_M
+        return _near_end(other_from_junction, extent) + gap
+
+    # Junction 0 joins leg 0 (its last module) and leg 1 (its first).
     if arr.owners[0] == 0:
-        legs[0] = backward(0, last(0))
-        depth = _depth_near(legs[0], last(0), reach[1])
-        legs[1] = forward(1, first(1) + d * (depth + JOIN_GAP_M))
+        side = square(0, 1, orders[1])
+        legs[0] = backward(0, last(0) - d * side)
+        depth = _near_end(orders[0][::-1], side + FRONT_BAND_M)
+        legs[1] = forward(1, first(1) + d * (depth + gap))
     else:
-        legs[1] = forward(1, first(1))
-        depth = _depth_near(legs[1], first(1), reach[0])
-        legs[0] = backward(0, last(0) - d * (depth + JOIN_GAP_M))
+        side = square(1, 0, orders[0][::-1])
+        legs[1] = forward(1, first(1) + d * side)
+        depth = _near_end(orders[1], side + FRONT_BAND_M)
+        legs[0] = backward(0, last(0) - d * (depth + gap))
     filler = None
-    if len(walls) == 3:
+    if len(walls) == 3:  # junction 1 joins leg 1 (its last module) and leg 2 (its first)
         reached = legs[1][-1][2] if d > 0 else legs[1][-1][1]
         if arr.owners[1] == 2:
-            legs[2] = forward(2, first(2))
-            stop = last(1) - d * (_depth_near(legs[2], first(2), reach[1]) + JOIN_GAP_M)
+            side = square(2, 1, orders[1][::-1])
+            legs[2] = forward(2, first(2) + d * side)
+            stop = last(1) - d * (_near_end(orders[2], side + FRONT_BAND_M) + gap)
         else:
-            stop = last(1)
+            side = square(1, 2, orders[2])
+            stop = last(1) - d * side
         filler = (stop - reached) * d
         if filler < -EPS:
             return "the U's middle leg is longer than its wall leaves room for"
         if filler > FILLER_MAX_M + EPS:
             return f"the U's middle leg stops {filler:.2f} m short of its far junction"
         if arr.owners[1] == 1:
-            depth = _depth_near(legs[1], last(1), reach[2])
-            legs[2] = forward(2, first(2) + d * (depth + JOIN_GAP_M))
+            depth = _near_end(orders[1][::-1], side + FRONT_BAND_M)
+            legs[2] = forward(2, first(2) + d * (depth + gap))
     return ChainLayout(walls, tuple(tuple(leg) for leg in legs), filler)
 
 

@@ -24,6 +24,12 @@ candidates. Accepted objects are written into the scene at their settled pose (`
 they sink into their support so the scene starts contact-free. The receptacle keeps its pose
 in the scene; how far it drifted during the drops (when it is not static) is reported.
 
+**Inside** (``inside`` requests): the same, on the receptacle's interior surfaces (an
+articulated asset's shelves behind its doors, drawer bottoms, a fridge's glass shelves: its
+``articulation.interior``) with its doors and drawers closed: the candidate is spawned in the
+free space of the closed compartment, must fit under the surface's ``clearance_m``, and must
+come to rest on the body that surface belongs to (the carcass, or the drawer it moves with).
+
 Deterministic for a given generator: each object draws from its own child generator, every
 drop starts from the committed state in a fresh MjData, and the first accepted candidate in
 sampling order wins, so neither ``batch`` nor the number of threads changes the result.
@@ -45,6 +51,7 @@ import numpy as np
 
 from holomj.errors import InputError, closest_names
 from holomj.library.store import AssetLibrary, LibraryAsset
+from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.physics.drop_world import DropWorld, Outcome
@@ -53,6 +60,7 @@ from holomj.physics.surfaces_world import (
     WorldSurface,
     footprint,
     object_yaw,
+    world_interior_surfaces,
     world_surfaces,
 )
 from holomj.spec.scene import SceneObject, SceneSpec
@@ -74,17 +82,22 @@ class Placement:
 
     object_id: str
     asset: str
-    surface_index: int | None  # index into the receptacle asset's ``surfaces``
+    surface_index: int | None  # index into the receptacle asset's ``surfaces`` (inside:
+    #                            into its ``articulation.interior``)
     attempts: int  # candidate poses tried (spawn rejections included)
     accepted: bool
     reason: str  # "placed" or why it failed
     final_pose: dict[str, Any] | None  # {"position": [x, y, z], "quat": [w, x, y, z], ...}
     seconds: float
     rejections: dict[str, int] = field(default_factory=dict)  # reason -> count
+    inside: bool = False  # asked inside the receptacle (its interior surfaces)
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-able form."""
-        return dict(self.__dict__)
+        """JSON-able form (``inside`` only for an object asked inside)."""
+        record = dict(self.__dict__)
+        if not self.inside:
+            del record["inside"]
+        return record
 
 
 @dataclass(frozen=True)
@@ -121,6 +134,7 @@ class _Job:
     asset: LibraryAsset
     seed: int
     order: int
+    inside: bool = False
 
 
 def populate(
@@ -136,8 +150,10 @@ def populate(
     batch: int = 8,
     nthread: int | None = None,
     attach: Callable[[CompiledScene], CompiledScene] | None = None,
+    inside: list[Request] | None = None,
 ) -> PopulateResult:
-    """Drop the requested small objects onto ``receptacle_id`` (see the module docstring).
+    """Drop the requested small objects onto ``receptacle_id`` (see the module docstring);
+    those of ``inside`` go into it (onto its interior surfaces).
 
     ``nthread`` worker threads drop candidates in parallel (default :func:`default_threads`);
     the result does not depend on it. ``attach`` adds what the scene carries besides its
@@ -147,20 +163,31 @@ def populate(
     ``library`` must hold the scene's assets and the requested ones (see
     :func:`merge_libraries`). ``requests`` are
     (category or asset id, count). Raises :class:`InputError` for an unknown receptacle, a
-    receptacle without support surfaces, an unknown request or bad numbers.
+    receptacle without support surfaces (without interior surfaces, for ``inside``), an
+    unknown request or bad numbers.
     """
     start = time.perf_counter()
     _check_numbers(max_attempts, drop_height, settle_s, batch)
     receptacle = find_object(scene, receptacle_id)
     rec_asset = library.get(receptacle.asset)
     surfaces = world_surfaces(receptacle, rec_asset.meta)
-    if not surfaces:
+    interior = world_interior_surfaces(receptacle, rec_asset.meta)
+    if (requests or not inside) and not surfaces:
         raise InputError(
             f"object {receptacle_id!r} (asset {rec_asset.meta.id!r}) has no support surfaces",
             where="--on",
             fix="choose a table, desk, shelf or other receptacle",
         )
+    if inside and not interior:
+        raise InputError(
+            f"object {receptacle_id!r} (asset {rec_asset.meta.id!r}) has nothing to put things "
+            "inside (no interior surfaces)",
+            where="--on",
+            fix="choose an articulated cabinet, drawer unit, fridge or other storage",
+        )
     jobs = _make_jobs(scene, library, requests, rng)
+    if inside:
+        jobs += _make_jobs(scene, library, inside, rng, inside=True, first=jobs)
     if not jobs:
         return PopulateResult(scene, [], 0.0, time.perf_counter() - start)
 
@@ -172,6 +199,7 @@ def populate(
     world = DropWorld(compiled, [j.object_id for j in jobs], nthread=threads)
     rec_start, _ = world.pose(receptacle_id)
     nstep = max(1, round(settle_s / world.model.opt.timestep))
+    bodies = _surface_bodies(world, receptacle_id, interior)
 
     placed: list[str] = []
     outcomes: dict[str, Placement] = {}
@@ -179,7 +207,7 @@ def populate(
     try:
         for job in order:
             outcome = _place_one(
-                world, job, surfaces, placed, receptacle_id,
+                world, job, interior if job.inside else surfaces, placed, bodies,
                 max_attempts=max_attempts, drop_height=drop_height, nstep=nstep, batch=batch,
             )  # fmt: skip
             outcomes[job.object_id] = outcome
@@ -271,10 +299,31 @@ def resolve_request(library: AssetLibrary, name: str, rng: np.random.Generator) 
     return candidates[int(rng.integers(len(candidates)))]
 
 
+def _surface_bodies(
+    world: DropWorld, receptacle_id: str, interior: list[WorldSurface]
+) -> dict[str | None, int]:
+    """The body ids a dropped object may rest on, by the part a surface lies on (None: the
+    receptacle's carcass)."""
+    bodies: dict[str | None, int] = {None: world.bodies[receptacle_id].body}
+    for surface in interior:
+        if surface.part is not None:
+            body = names.object_part_body(receptacle_id, surface.part)
+            bodies[surface.part] = world.model.body(body).id
+    return bodies
+
+
 def _make_jobs(
-    scene: SceneSpec, library: AssetLibrary, requests: list[Request], rng: np.random.Generator
+    scene: SceneSpec,
+    library: AssetLibrary,
+    requests: list[Request],
+    rng: np.random.Generator,
+    *,
+    inside: bool = False,
+    first: list[_Job] | None = None,
 ) -> list[_Job]:
-    taken = {o.id for o in scene.objects}
+    """Jobs for ``requests`` (after the jobs ``first``, whose ids they do not reuse)."""
+    before = first or []
+    taken = {o.id for o in scene.objects} | {j.object_id for j in before}
     counters: Counter[str] = Counter()
     jobs = []
     for name, count in requests:
@@ -290,7 +339,7 @@ def _make_jobs(
                     break
             taken.add(object_id)
             seed = int(rng.integers(2**63 - 1))
-            jobs.append(_Job(object_id, asset, seed, len(jobs)))
+            jobs.append(_Job(object_id, asset, seed, len(before) + len(jobs), inside))
     return jobs
 
 
@@ -325,7 +374,7 @@ def _place_one(
     job: _Job,
     surfaces: list[WorldSurface],
     placed: list[str],
-    receptacle_id: str,
+    bodies: dict[str | None, int],
     *,
     max_attempts: int,
     drop_height: float,
@@ -345,7 +394,6 @@ def _place_one(
         return _failure(job, 0, "no surface is large or high enough for it", Counter(), start)
     weights = np.array([s.surface.area for s in samplers])
     weights = weights / weights.sum()
-    rec_body = world.bodies[receptacle_id].body
     before = {oid: world.pose(oid)[0] for oid in placed}
     world.activate(job.object_id)
     tried: list[tuple[int, str]] = []  # (attempt number, why it was rejected)
@@ -382,7 +430,7 @@ def _place_one(
                 _judge_candidate,
                 world,
                 [p[1].surface for p in pending],
-                rec_body,
+                bodies,
                 meta.upright,
                 before,
             ),
@@ -409,6 +457,7 @@ def _place_one(
                 final_pose=_final_pose(outcome, lift, sampler.surface.height),
                 seconds=round(time.perf_counter() - start, 4),
                 rejections=dict(sorted(rejections.items())),
+                inside=job.inside,
             )
     world.park(job.object_id)
     rejections = Counter(r for _, r in tried)
@@ -418,13 +467,13 @@ def _place_one(
 def _judge_candidate(
     world: DropWorld,
     surfaces: list[WorldSurface],
-    rec_body: int,
+    bodies: dict[str | None, int],
     upright: bool,
     before: dict[str, np.ndarray],
     k: int,
     outcome: Outcome,
 ) -> str | None:
-    return _judge(world, outcome, surfaces[k], rec_body, upright, before)
+    return _judge(world, outcome, surfaces[k], bodies[surfaces[k].part], upright, before)
 
 
 def _judge(
@@ -488,6 +537,7 @@ def _failure(
         final_pose=None,
         seconds=round(time.perf_counter() - start, 4),
         rejections=dict(sorted(rejections.items())),
+        inside=job.inside,
     )
 
 

@@ -1,8 +1,11 @@
 """Support surfaces and footprints in world coordinates, and sampling poses on them.
 
 An asset's :class:`~holomj.spec.assets.SupportSurface` lives in the asset frame; here it is
-scaled and moved to the receptacle's pose in the scene. Receptacles are assumed to stand upright:
-only the yaw of their orientation is used (the surfaces of a tilted table are not supports).
+scaled and moved to the receptacle's pose in the scene. The interior surfaces of an articulated
+asset (:class:`~holomj.spec.assets.InteriorSurface`: shelves behind doors, drawer bottoms) are
+placed the same way, at the closed pose (:func:`world_interior_surfaces`). Receptacles are
+assumed to stand upright: only the yaw of their orientation is used (the surfaces of a tilted
+table are not supports).
 """
 
 from __future__ import annotations
@@ -24,10 +27,12 @@ from holomj.spec.scene import SceneObject
 class WorldSurface:
     """A support surface of a receptacle at its pose in the scene."""
 
-    index: int  # position in the asset's ``surfaces`` list
+    index: int  # position in the asset's ``surfaces`` list (``articulation.interior`` inside)
     height: float  # world z of the surface
     polygon: Polygon  # world x/y
     clearance: float  # free height above it up to the next surface of the same asset (inf: none)
+    interior: bool = False  # inside the asset (behind a door, in a drawer)
+    part: str | None = None  # the moving part it lies on (None: the carcass)
 
     @property
     def area(self) -> float:
@@ -62,6 +67,33 @@ def world_surfaces(obj: SceneObject, meta: AssetMeta) -> list[WorldSurface]:
         above = [h for h in heights if h > height + 1e-6]
         clearance = (min(above) - height) if above else math.inf
         surfaces.append(WorldSurface(index, pz + height, poly, clearance))
+    return surfaces
+
+
+def world_interior_surfaces(obj: SceneObject, meta: AssetMeta) -> list[WorldSurface]:
+    """The interior surfaces of an articulated receptacle at the object's pose, its parts
+    closed; their clearance is the free height inside (``clearance_m``). Empty for a rigid
+    asset."""
+    if meta.articulation is None:
+        return []
+    sx, sy, sz = obj.scale3
+    yaw = object_yaw(obj)
+    px, py, pz = obj.position
+    surfaces = []
+    for index, surface in enumerate(meta.articulation.interior):
+        poly = Polygon([(x * sx, y * sy) for x, y in surface.polygon])
+        if not poly.is_valid:
+            poly = poly.buffer(0)
+        if poly.is_empty or poly.geom_type != "Polygon":
+            continue
+        poly = affinity.rotate(poly, yaw, origin=(0.0, 0.0), use_radians=True)
+        poly = orient(affinity.translate(poly, px, py), 1.0)
+        clearance = surface.clearance_m * sz if surface.clearance_m is not None else math.inf
+        surfaces.append(
+            WorldSurface(
+                index, pz + surface.height * sz, poly, clearance, interior=True, part=surface.part
+            )
+        )
     return surfaces
 
 

@@ -14,6 +14,8 @@ from asset_pipeline.procedural import CATEGORIES, DEFAULT_LIBRARY_VERSION
 from asset_pipeline.procedural.articulated import (
     ARTICULATED,
     ARTICULATED_VERSION,
+    KEPT_RIGID,
+    LIBRARY_ARTICULATED,
     articulated_variants,
     generate_articulated,
 )
@@ -35,6 +37,8 @@ from tests.asset_pipeline.articulated_helpers import (
 )
 
 CATEGORY_NAMES = sorted(ARTICULATED)
+# Every asset of the library (each category's size variants; the default library ships them).
+ASSET_IDS = sorted(v[0] for v in articulated_variants())
 OPEN_DOOR_RAD = math.radians(20.0)
 OPEN_DRAWER_M = 0.10
 DEEPEST_M = 0.001
@@ -42,7 +46,7 @@ DEEPEST_M = 0.001
 
 @pytest.fixture(scope="module")
 def library(tmp_path_factory: pytest.TempPathFactory) -> AssetLibrary:
-    """One asset (seed 0, default size) of every articulated category."""
+    """Every articulated asset of the library variant (all sizes of every category)."""
     root = tmp_path_factory.mktemp("articulated") / "library"
     return articulated_library(root)
 
@@ -56,7 +60,8 @@ def test_the_catalogue_covers_the_issue() -> None:
     wanted = {
         "base_cabinet", "kitchen_cabinet", "wall_cabinet", "drawer_unit", "wardrobe", "dresser",
         "nightstand", "sideboard", "fridge", "oven", "stove", "dishwasher", "microwave",
-        "washing_machine", "toilet", "laptop", "trunk", "toy_box",
+        "washing_machine", "toilet", "laptop", "trunk", "toy_box", "kitchen_counter",
+        "sink_counter",
     }  # fmt: skip
     assert wanted <= set(ARTICULATED)
     # Categories the rigid library has keep their kind and placement (a one-line swap later).
@@ -65,6 +70,9 @@ def test_the_catalogue_covers_the_issue() -> None:
             rigid = CATEGORIES[name]
             assert info.placement == rigid.placement and info.kind == rigid.kind, name
             assert info.check_size(rigid.default_size) == rigid.default_size, name
+            # the same valid sizes: synthesis clamps a planned size alike either way
+            assert (info.size_min, info.size_max) == (rigid.size_min, rigid.size_max), name
+            assert info.variants == rigid.variants, name
 
 
 @pytest.mark.parametrize("category", CATEGORY_NAMES)
@@ -141,11 +149,11 @@ def _open_parent_first(model: mujoco.MjModel, data: mujoco.MjData, joint: int) -
     simulate(model, data, 0.3)
 
 
-@pytest.mark.parametrize("category", CATEGORY_NAMES)
+@pytest.mark.parametrize("asset", ASSET_IDS)
 def test_stays_closed_opens_under_a_pull_and_closes_without_penetration(
-    library: AssetLibrary, category: str
+    library: AssetLibrary, asset: str
 ) -> None:
-    model = compiled_object(library, _asset(category)).model
+    model = compiled_object(library, asset).model
     joints = part_joints(model)
     assert joints
     data = mujoco.MjData(model)
@@ -225,10 +233,16 @@ def test_an_object_in_a_drawer_stays_inside_when_it_is_pulled(
 
 
 # --- the library switch -----------------------------------------------------------------------
-def test_the_default_library_stays_rigid_by_default() -> None:
+def test_the_default_library_is_articulated_by_default() -> None:
     from asset_pipeline import default_library
 
-    assert default_library.ARTICULATED_BY_DEFAULT is False
+    assert default_library.ARTICULATED_BY_DEFAULT is True
+    # synthesis on demand follows: the library's articulated categories, not the laptop
+    assert default_library.articulated_synthesis("kitchen_counter")
+    assert not default_library.articulated_synthesis("laptop")
+    assert not default_library.articulated_synthesis("sofa")
+    assert sorted(KEPT_RIGID) == ["laptop"]
+    assert sorted(LIBRARY_ARTICULATED) == sorted(set(ARTICULATED) - KEPT_RIGID)
 
 
 @pytest.mark.slow
@@ -237,10 +251,12 @@ def test_the_switch_builds_the_default_library_articulated(tmp_path: Path) -> No
 
     root = ensure_default_library(tmp_path / "library", articulated=True)
     library = AssetLibrary.open(root)
-    for category in ARTICULATED:
+    for category in LIBRARY_ARTICULATED:
         found = library.by_category(category)
         assert found and all(a.meta.articulation is not None for a in found), category
     assert library.by_category("sofa")  # the rest of the default library is there
+    laptops = library.by_category("laptop")  # kept rigid: open on desks, as planned
+    assert laptops and all(a.meta.articulation is None for a in laptops)
     assert (root / VERSION_FILE).read_text().strip() == ARTICULATED_VERSION
     ensure_default_library(root, articulated=False)  # and back: the rigid ones return
     rigid = AssetLibrary.open(root).by_category("base_cabinet")

@@ -333,3 +333,49 @@ def test_turned_stand_in_keeps_tilted_orientation_consistent() -> None:
     turned = _turn_quat(quat_from_unity(0.0, 30.0, 0.0), 90.0)
     assert turned == pytest.approx(quat_from_euler_xyz(0.0, 0.0, 90.0 - 30.0 + 90.0), abs=1e-9)
     assert _turn_quat((1.0, 0.0, 0.0, 0.0), 0.0) == (1.0, 0.0, 0.0, 0.0)
+
+
+# -- objects that open -----------------------------------------------------------------------
+def test_objects_that_open_prefer_articulated_stand_ins(default_library: AssetLibrary) -> None:
+    box = thor_asset("Box_10")
+    assert box is not None and box.can_open
+
+    def choose(prefer: bool):
+        choice, _ = choose_asset(
+            default_library,
+            object_id="b",
+            requested="Box_10",
+            category=thor_category("Box"),
+            size=box.size,
+            fit=True,
+            stand_ins=(*thor_type_table()["Box"][1:], "Box"),
+            size_source="thor",
+            prefer_articulated=prefer,
+        )
+        return choice, default_library.get(choice.asset).meta
+
+    choice, meta = choose(True)  # a box with a lid that lifts, scaled to the THOR box
+    assert meta.articulated and meta.category in ("toy_box", "trunk"), meta.id
+    assert "(the original opens)" in choice.substitution.reason  # type: ignore[union-attr]
+    choice, meta = choose(False)  # without the preference: the rigid cardboard box
+    assert meta.category == "cardboard_box" and not meta.articulated
+
+
+@pytest.mark.parametrize("name", REAL_HOUSES)
+def test_real_houses_get_articulated_stand_ins_for_what_opens(
+    default_library: AssetLibrary, name: str
+) -> None:
+    house = load_real_house(name)
+    result = import_procthor(copy.deepcopy(house), default_library, name)
+    used = {o.id: o.asset for o in result.scene.objects}
+    opening = [
+        o
+        for o, _ in _kept(house, result)
+        if thor_asset(o["assetId"]).can_open
+        and thor_asset(o["assetId"]).type in ("Box", "Fridge", "Toilet", "WashingMachine")
+    ]
+    assert opening
+    for obj in opening:
+        asset = used[sanitise(obj["id"])]
+        meta = default_library.get(asset).meta
+        assert meta.articulated, (obj["id"], asset)

@@ -150,7 +150,10 @@ def test_prompt_is_honoured(prompt: dict[str, Any], seed: int, library: Path) ->
     assert made.attributes_honoured == expect, made.parts_how
     folder = library / made.folder
     meta = json.loads((folder / "asset.json").read_text())
-    visuals = [Visual(folder, entry) for entry in meta["visual"]]
+    # an articulated asset's doors, drawers and their handles are its moving parts' visuals
+    parts = (meta.get("articulation") or {}).get("parts", [])
+    entries = meta["visual"] + [entry for part in parts for entry in part["visual"]]
+    visuals = [Visual(folder, entry) for entry in entries]
     roles = sorted({k.partition(".")[0] for k in expect if "." in k})
     assert set(made.parts_how) == set(roles)
     assert not any(h.startswith("not honoured") for h in made.parts_how.values())

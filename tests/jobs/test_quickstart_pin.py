@@ -23,7 +23,12 @@ QUICKSTART_SEED = 7
 #   furniture nudged to open unreachable floor (measured as the navigation map sees it).
 # - procedural textures with UVs, hull colliders that cover the visuals (collider audit), per-part
 #   roles, kitchens as counter runs and the planner's seating/area rules.
-SCENE_XML_SHA256 = "3705725d3bb77ac4eb49891d59f4b9d723040d52a046e4abf584915ba0ed93d7"
+# - issue 17: the default library is articulated (counters, cabinets, wardrobes, dressers,
+#   nightstands and appliances with doors, drawers and racks on joints: 26 moving parts in this
+#   scene), generate puts things inside them, and an L's or U's corner square is left empty
+#   (a dead corner); re-pinned once at the end of that work, which also takes in the layout
+#   changes of the same day (open pockets), so it was perhaps stale before.
+SCENE_XML_SHA256 = "6b99c7a6169a727b66b5ba401b79c8badddbba33e0254ead0437e0308a699320"
 
 
 @pytest.mark.slow

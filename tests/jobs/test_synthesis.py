@@ -52,6 +52,26 @@ def test_size_is_clamped_and_reported(library_root: Path) -> None:
     assert fit_size("sofa", (0.9, 2.0, 0.85)) == ((0.9, 2.0, 0.85), [])
 
 
+def test_articulated_categories_are_synthesised_articulated(
+    library_root: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from asset_pipeline import default_library
+
+    wanted = {"colour": "white", "handles.material": "brass"}
+    made = synthesise(library_root, "kitchen counter", (0.62, 1.8, 0.9), 2, wanted)
+    meta = AssetLibrary.open(library_root).get(made.asset_id).meta
+    assert meta.articulated and meta.category == "kitchen_counter"
+    assert made.attributes_honoured == wanted and meta.size == (0.62, 1.8, 0.9)
+    assert made.parts_how["handles"].startswith("brass on the handles")
+    laptop = synthesise(library_root, "laptop", None, 0, {"colour": "black"})
+    assert not AssetLibrary.open(library_root).get(laptop.asset_id).meta.articulated
+    # with the switch off the same request makes a rigid asset, under another id
+    monkeypatch.setattr(default_library, "ARTICULATED_BY_DEFAULT", False)
+    rigid = synthesise(library_root, "kitchen counter", (0.62, 1.8, 0.9), 2, wanted)
+    assert rigid.asset_id != made.asset_id
+    assert not AssetLibrary.open(library_root).get(rigid.asset_id).meta.articulated
+
+
 def test_generator_lookup() -> None:
     assert generator_for("Dining Table") == "dining_table"
     assert generator_for("spaceship_console") is None

@@ -152,6 +152,18 @@ def sizes_of(library, objects: list[SceneObject]) -> dict[str, tuple]:
     return {o.asset: library.get(o.asset).meta.size for o in objects}
 
 
+def assert_fronts_are_free(modules: list[SceneObject], sizes: dict[str, tuple]) -> None:
+    """No module of the run stands in the 0.3 m in front of another's fronts (the doors of a
+    module covering a corner would open into the other leg)."""
+    for a in modules:
+        depth, width, _ = sizes[a.asset]
+        band = box(depth / 2 + 0.005, -width / 2 + 0.005, depth / 2 + 0.3, width / 2 - 0.005)
+        band = affinity.translate(affinity.rotate(band, a.yaw_deg, origin=(0, 0)), *a.position[:2])
+        for b in modules:
+            if b is not a:
+                assert footprint(b, sizes[b.asset]).intersection(band).area < 1e-9, (a.id, b.id)
+
+
 def junction_gap(leg: list[SceneObject], b: SceneObject, sizes: dict[str, tuple]) -> float:
     """How far module ``b`` of one leg is from the nearest module of the other ``leg``."""
     other = footprint(b, sizes[b.asset])
@@ -174,7 +186,8 @@ def test_an_l_shaped_kitchen_has_two_legs_meeting_at_a_corner(l_kitchen, default
     assert [leg["role"] for leg in record["legs"]] == ["corner", "arm"]
     # the legs stand on two walls at right angles
     assert (round(corner_leg[0].yaw_deg - arm[0].yaw_deg) // 90) % 2 == 1
-    # the corner leg's last module covers the corner: it reaches the arm's wall ...
+    # the corner leg owns the corner square and leaves it empty (a dead corner): its last
+    # module stands the depth of the arm's first module off the arm's wall ...
     inset = inset_of(room)
     corner = footprint(corner_leg[-1], sizes[corner_leg[-1].asset])
     arm_back = footprint(arm[0], sizes[arm[0].asset])
@@ -183,10 +196,13 @@ def test_an_l_shaped_kitchen_has_two_legs_meeting_at_a_corner(l_kitchen, default
         for a, b in zip(inset.exterior.coords, list(inset.exterior.coords)[1:])
         if LineString([a, b]).distance(arm_back) < 1e-3
     ]
-    assert walls and min(w.distance(corner) for w in walls) < 1e-3
+    arm_depth = sizes[arm[0].asset][0]
+    assert walls and abs(min(w.distance(corner) for w in walls) - arm_depth) < 0.005
     # ... and the arm starts at its front, touching it without overlapping
     assert junction_gap(corner_leg, arm[0], sizes) <= GAP_MAX
     assert corner.intersection(arm_back).area < 1e-9
+    # so no module has the other leg in front of its doors and drawers
+    assert_fronts_are_free(corner_leg + arm, sizes)
     # every module is placed, and the run's modules are all the room's run modules
     placed = {o.id for o in furniture.objects}
     assert all(object_id(room.id, m) in placed for m in record["modules"])
@@ -230,8 +246,9 @@ def test_a_galley_kitchen_has_legs_on_opposite_walls_facing_each_other(default_l
 
 def test_a_u_shaped_kitchen_closes_its_legs_at_both_corners(default_library):
     objects = [*KITCHEN[:4], ("base cabinet", "base_cabinet"), KITCHEN[4]]
+    # 3.8 m a side: the two dead corners need the room a 3.25 m square lacks
     room, furniture = furnish_kitchen(
-        default_library, (3.25, 3.25), objects, request="a U-shaped kitchen"
+        default_library, (3.8, 3.8), objects, request="a U-shaped kitchen"
     )
     record = furniture.layout["counter_run"]
     assert record["shape"] == "U", record["tried"]
@@ -244,6 +261,7 @@ def test_a_u_shaped_kitchen_closes_its_legs_at_both_corners(default_library):
     assert gaps[0] <= GAP_MAX  # one junction closes exactly
     assert gaps[1] <= FILLER_MAX_M + GAP_MAX  # the other within a filler strip
     assert 0.0 <= record["filler_m"] <= FILLER_MAX_M
+    assert_fronts_are_free(a + middle + c, sizes)
 
 
 def test_a_u_that_does_not_fit_falls_back_to_an_l(default_library):

@@ -4,13 +4,16 @@ Every category of :data:`ARTICULATED` builds an asset whose moving parts are rec
 metadata (:class:`holomj.spec.assets.Articulation`: parts with their meshes, colliders, joint,
 handle; interior surfaces) and compiled by holomj with real hinge and slide joints.
 
-The default library holds the rigid assets. :func:`library_assets` is its articulated
-variant: the same assets, except that every category with an articulated generator gets
-articulated assets (ids ``<category>_art_NNN``) in place of its rigid ones, so retrieval picks
-them for kitchens and bedrooms. ``asset_pipeline.default_library.ARTICULATED_BY_DEFAULT``
-switches the default library to it. :data:`ARTICULATED_VERSION` covers these generators and
-the rigid ones (this package is outside ``DEFAULT_LIBRARY_VERSION``, so adding articulated
-generators leaves the rigid default library and what ``generate`` makes unchanged).
+:func:`library_assets` is the articulated variant of the default library (what
+``asset_pipeline.default_library.ARTICULATED_BY_DEFAULT`` builds, on by default): the same
+assets, except that every category of :data:`LIBRARY_ARTICULATED` gets articulated assets (ids
+``<category>_art_NNN``) in place of its rigid ones, so retrieval picks them for kitchens and
+bedrooms, and synthesis on demand makes them (:func:`in_library`). The laptop is the one
+articulated category left out (:data:`KEPT_RIGID`): the planner puts laptops on desks open, as
+the rigid one stands (23 cm tall), while the articulated one is closed (2 cm); it stays
+available through :func:`build_articulated_library` and :func:`generate_articulated`.
+:data:`ARTICULATED_VERSION` covers these generators and the rigid ones (this package is outside
+``DEFAULT_LIBRARY_VERSION``).
 """
 
 from __future__ import annotations
@@ -19,7 +22,12 @@ import hashlib
 from pathlib import Path
 
 from asset_pipeline.library_writer import AssetBundle, write_library
-from asset_pipeline.procedural.articulated import appliances, cabinets, lids  # noqa: F401
+from asset_pipeline.procedural.articulated import (  # noqa: F401
+    appliances,
+    cabinets,
+    counters,
+    lids,
+)
 from asset_pipeline.procedural.articulated.registry import (
     ARTICULATED,
     articulated_info,
@@ -29,13 +37,28 @@ from asset_pipeline.procedural.articulated.registry import (
 __all__ = [
     "ARTICULATED",
     "ARTICULATED_VERSION",
+    "KEPT_RIGID",
+    "LIBRARY_ARTICULATED",
     "articulated_assets",
     "articulated_info",
     "articulated_variants",
     "build_articulated_library",
     "generate_articulated",
+    "in_library",
     "library_assets",
 ]
+
+KEPT_RIGID = frozenset({"laptop"})
+"""Articulated categories whose rigid assets the library variant keeps (see the module
+docstring)."""
+LIBRARY_ARTICULATED = frozenset(ARTICULATED) - KEPT_RIGID
+"""The categories the library variant holds articulated."""
+
+
+def in_library(category: str) -> bool:
+    """True when the articulated variant of the default library holds ``category``
+    articulated (and synthesis on demand, with the switch on, makes it articulated)."""
+    return category in LIBRARY_ARTICULATED
 
 
 def _version() -> str:
@@ -74,11 +97,11 @@ def articulated_assets(categories: list[str] | None = None) -> list[AssetBundle]
 
 def library_assets() -> list[AssetBundle]:
     """The articulated variant of the default library: the default assets with those of every
-    articulated category replaced by articulated ones."""
+    category of :data:`LIBRARY_ARTICULATED` replaced by articulated ones."""
     from asset_pipeline.procedural import default_assets
 
-    rigid = [b for b in default_assets() if b.meta.category not in ARTICULATED]
-    return rigid + articulated_assets()
+    rigid = [b for b in default_assets() if b.meta.category not in LIBRARY_ARTICULATED]
+    return rigid + articulated_assets(sorted(LIBRARY_ARTICULATED))
 
 
 def build_articulated_library(

@@ -361,7 +361,7 @@ def _rack(
     high=(0.7, 0.65, 0.9),
     mass=45.0,
     description="a {finish} dishwasher with a drop-down door and two sliding racks",
-    variants=(None, (0.58, 0.45, 0.82)),
+    variants=(None, (0.58, 0.45, 0.82), (0.62, 0.6, 0.88)),
 )
 def dishwasher(size: Vec3, rng: Rng) -> Design:
     """A dishwasher: a tub open at the front on a kick plinth, a full-height drop-down door
@@ -401,12 +401,12 @@ def dishwasher(size: Vec3, rng: Rng) -> Design:
     "microwave",
     "object",
     size=(0.38, 0.5, 0.3),
-    low=(0.3, 0.4, 0.22),
+    low=(0.28, 0.38, 0.2),
     high=(0.5, 0.7, 0.42),
     mass=12.0,
     placement=("object",),
     description="a {finish} microwave with a side-hinged door",
-    variants=(None,),
+    variants=(None, (0.34, 0.45, 0.26)),
 )
 def microwave(size: Vec3, rng: Rng) -> Design:
     """A microwave: a cavity on the left behind a door hinged on its left edge, a control
@@ -471,7 +471,7 @@ def microwave(size: Vec3, rng: Rng) -> Design:
     high=(0.7, 0.7, 0.9),
     mass=70.0,
     description="a {finish} front-loading washing machine with a round door",
-    variants=(None, (0.55, 0.6, 0.85)),
+    variants=(None, (0.55, 0.6, 0.85), (0.65, 0.6, 0.88)),
 )
 def washing_machine(size: Vec3, rng: Rng) -> Design:
     """A front loader: a cabinet whose front panel has a porthole, a round door hinged on its

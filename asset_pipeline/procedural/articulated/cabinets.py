@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from asset_pipeline.procedural.articulated.kit import (
     FRONT_T,
     GAP,
+    HANDLE_OUT,
     PANEL,
     PROUD,
     SEAM,
@@ -45,6 +46,7 @@ from asset_pipeline.procedural.round_parts import Cylinder
 from asset_pipeline.procedural.storage import WORKTOPS
 
 LINER = PINE  # drawer boxes and cupboard liners
+SHELF_MIN_DEPTH = 0.1  # a compartment shallower than this (front to back) gets no shelf
 
 
 @dataclass
@@ -68,10 +70,13 @@ def shell(
     overhang: float = 0.0,
 ) -> Shell:
     """An open-front carcass on a plinth, legs or nothing, under a top board (the outer
-    surface) that covers the fronts (and overhangs them by ``overhang``)."""
+    surface) that covers the fronts (and overhangs them by ``overhang``, less than the
+    handles stand out: the handles are the front of the asset)."""
     d, w, h = size
     hd, hw = 0.5 * d, 0.5 * w
-    face = hd - PROUD - overhang
+    if not 0.0 <= overhang < HANDLE_OUT:
+        raise ValueError(f"a worktop overhang of {overhang} m must lie in [0, {HANDLE_OUT}) m")
+    face = hd - PROUD
     base_h = {"none": 0.0, "plinth": uniform(rng, 0.06, 0.1), "legs": uniform(rng, 0.1, 0.16)}[base]
     parts: list[Part] = []
     if base == "plinth":
@@ -122,6 +127,8 @@ def cupboard(
     height = cavity.z1 - cavity.z0
     count = shelves if shelves is not None else max(0, int(height / 0.32) - 1)
     count = min(count, max(0, int(height / 0.16) - 1))
+    if cavity.x1 - cavity.x0 < SHELF_MIN_DEPTH:  # a shallow wall cabinet: no room for one
+        count = 0
     for k in range(count):
         parts += shelf(cavity, cavity.z0 + (k + 1) * height / (count + 1), body, behind)
     return parts, links
@@ -179,7 +186,7 @@ def doors_under_drawers(
     "base_cabinet",
     "furniture",
     size=(0.58, 0.6, 0.88),
-    low=(0.4, 0.3, 0.5),
+    low=(0.35, 0.3, 0.5),
     high=(0.7, 1.2, 0.95),
     mass=28.0,
     description="a {body} base cabinet with {doors} hinged door{s}{drawers} and a {top} top",
@@ -241,7 +248,7 @@ def kitchen_cabinet(size: Vec3, rng: Rng) -> Design:
     "wall_cabinet",
     "furniture",
     size=(0.2, 0.6, 0.7),
-    low=(0.18, 0.3, 0.3),
+    low=(0.12, 0.3, 0.3),
     high=(0.45, 1.5, 1.2),
     mass=10.0,
     placement=("wall",),
@@ -283,13 +290,14 @@ def drawer_unit(size: Vec3, rng: Rng) -> Design:
     high=(0.7, 2.4, 2.4),
     mass=80.0,
     description="a tall {body} wardrobe with {doors} hinged door{s}{drawers}",
-    variants=(None, (0.58, 1.0, 2.1)),
+    variants=(None, (0.58, 1.8, 2.1)),
 )
 def wardrobe(size: Vec3, rng: Rng) -> Design:
-    """Two doors (one when narrow) over a hanging space with a hat shelf, maybe over a row of
+    """Doors (one per 0.5-0.7 m) over a hanging space with a hat shelf, maybe over a row of
     drawers."""
     body = pick(rng, CASE_FINISHES)
-    doors = 1 if size[1] < 0.7 else 2
+    w = size[1]
+    doors = 1 if w < 0.7 else (2 if w < 1.4 else (3 if w < 2.0 else 4))  # as the rigid one
     drawers = chance(rng, 0.4)
     sh = shell(size, rng, body, body, 0.025, pick(rng, ("plinth", "none")))
     handle = pick(rng, HANDLES)
@@ -343,7 +351,7 @@ def wardrobe(size: Vec3, rng: Rng) -> Design:
     "dresser",
     "furniture",
     size=(0.5, 1.2, 0.85),
-    low=(0.4, 0.5, 0.6),
+    low=(0.35, 0.5, 0.6),
     high=(0.65, 2.0, 1.3),
     mass=50.0,
     description="a {body} chest of {count} sliding drawers with {handle} handles",
@@ -407,11 +415,11 @@ def nightstand(size: Vec3, rng: Rng) -> Design:
     "sideboard",
     "furniture",
     size=(0.45, 1.6, 0.85),
-    low=(0.38, 0.9, 0.65),
+    low=(0.35, 0.9, 0.65),
     high=(0.6, 2.4, 1.0),
     mass=55.0,
     description="a long low {body} sideboard with {doors} hinged doors{drawers} and a {top} top",
-    variants=(None, (0.42, 1.2, 0.8)),
+    variants=(None, (0.42, 1.2, 0.8), (0.5, 2.0, 0.9)),
 )
 def sideboard(size: Vec3, rng: Rng) -> Design:
     """A row of doors opening in pairs, maybe under a row of drawers; a shelf inside."""

@@ -73,7 +73,7 @@ def _upright_limit(length: float, thickness: float, room: float) -> float:
     "toilet",
     "furniture",
     size=(0.68, 0.4, 0.8),
-    low=(0.6, 0.35, 0.7),
+    low=(0.55, 0.35, 0.7),
     high=(0.8, 0.5, 0.9),
     mass=30.0,
     description="a white toilet with a {seat} seat and lid that lift",
@@ -215,7 +215,7 @@ def _chest(
     high=(0.7, 1.4, 0.7),
     mass=20.0,
     description="a {body} storage trunk with a lid that lifts and a {metal} handle",
-    variants=(None, (0.45, 0.8, 0.45)),
+    variants=(None, (0.45, 0.8, 0.45), (0.6, 1.2, 0.6)),
 )
 def trunk(size: Vec3, rng: Rng) -> Design:
     """A blanket chest with a lifting lid."""
@@ -231,7 +231,7 @@ def trunk(size: Vec3, rng: Rng) -> Design:
     high=(0.6, 1.1, 0.65),
     mass=12.0,
     description="a {body} toy box with a lid that lifts",
-    variants=(None,),
+    variants=(None, (0.4, 0.65, 0.45), (0.55, 1.0, 0.6)),
 )
 def toy_box(size: Vec3, rng: Rng) -> Design:
     """A painted toy chest with a lifting lid."""

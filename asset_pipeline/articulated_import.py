@@ -65,7 +65,7 @@ from asset_pipeline import annotate, physical
 from asset_pipeline.decompose import decompose
 from asset_pipeline.handles import derive_grasp, lever_m
 from asset_pipeline.hulls import collision_records, postprocess
-from asset_pipeline.importer import visual_records
+from asset_pipeline.importer import physical_record, visual_records
 from asset_pipeline.kinematics import JointInfo, Kinematics, joint_motion, transformed
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.load import Part
@@ -335,19 +335,7 @@ def import_articulated(path: Path | str, asset_id: str, options: Any) -> Any:
         "interior_surfaces": [
             {"part": s["part"], "height": s["height"], "behind": s["behind"]} for s in interior
         ],
-        "physical": {
-            "category": meta.category,
-            "category_source": category_source,
-            "category_known": info.known,
-            "density_kg_m3": meta.density_kg_m3,
-            "mass_kg": meta.mass,
-            "mass_source": massed.source,
-            "mass_range_kg": list(info.mass_range_kg),
-            "material": info.material,
-            "mass_derivation": massed.derivation,
-            "upright": info.upright,
-            "friction": meta.friction,
-        },
+        "physical": physical_record(meta, info, massed, category_source),
         "files": {name: len(data) for name, data in sorted(files.items())},
         "timings_s": timings,
         "warnings": warnings,

@@ -43,6 +43,7 @@ from asset_pipeline.proximity import MeshProximity
 from asset_pipeline.repair import repair
 from asset_pipeline.surfaces import support_surfaces
 from holomj.errors import FormatError, SpecError
+from holomj.spec.assets import AssetMeta
 from holomj.spec.base import Identifier
 
 __all__ = ["CoacdParams", "ImportOptions", "ImportedAsset", "import_asset"]
@@ -88,6 +89,29 @@ def visual_records(
             entry["texture"] = textures[digest]
         visual.append(entry)
     return visual
+
+
+def physical_record(
+    meta: AssetMeta,
+    info: physical.CategoryInfo,
+    massed: physical.MassResult,
+    category_source: str,
+) -> dict[str, Any]:
+    """The ``physical`` section of an import's ``derivation.json``: the category and where it
+    came from, the mass and how it was derived, the material, friction and uprightness."""
+    return {
+        "category": meta.category,
+        "category_source": category_source,
+        "category_known": info.known,
+        "density_kg_m3": meta.density_kg_m3,
+        "mass_kg": meta.mass,
+        "mass_source": massed.source,
+        "mass_range_kg": list(info.mass_range_kg),
+        "material": info.material,
+        "mass_derivation": massed.derivation,
+        "upright": info.upright,
+        "friction": meta.friction,
+    }
 
 
 def import_asset(
@@ -214,19 +238,7 @@ def import_asset(
         },
         "quality": hullset.quality,
         "surfaces": [{"height": s.height, "area_m2": s.area} for s in surfaces],
-        "physical": {
-            "category": meta.category,
-            "category_source": category_source,
-            "category_known": info.known,
-            "density_kg_m3": meta.density_kg_m3,
-            "mass_kg": meta.mass,
-            "mass_source": massed.source,
-            "mass_range_kg": list(info.mass_range_kg),
-            "material": info.material,
-            "mass_derivation": massed.derivation,
-            "upright": info.upright,
-            "friction": meta.friction,
-        },
+        "physical": physical_record(meta, info, massed, category_source),
         "files": {name: len(data) for name, data in sorted(files.items())},
         "timings_s": timings,
         "warnings": warnings,

@@ -152,6 +152,7 @@ def drop_small_objects(
                     }
                 )
         inner = _inside_requests(out, scene, library, chooser, rules, seed, receptacle_id, failures)
+        requests, inner = _where_they_fit(out, library, receptacle_id, requests, inner, failures)
         if plan_obj is None and not inner and not failures:
             continue  # storage the draw left empty: nothing to report
         record: dict[str, Any] = {"receptacle": receptacle_id, "failures": failures}
@@ -181,6 +182,31 @@ def drop_small_objects(
         out.receptacles.append(record)
     out.seconds = time.perf_counter() - start
     return out
+
+
+def _where_they_fit(
+    out: SmallObjects,
+    library: AssetLibrary,
+    receptacle_id: str,
+    on_top: list[tuple[str, int]],
+    inside: list[tuple[str, int]],
+    failures: list[dict[str, str]],
+) -> tuple[list[tuple[str, int]], list[tuple[str, int]]]:
+    """The objects for on top and inside, moved to where the receptacle holds them: a
+    receptacle with no top surface but room inside (a toy box with a lid) takes its planned
+    objects inside; one with neither reports them as failures."""
+    if not on_top:
+        return on_top, inside
+    obj = next(o for o in out.scene.objects if o.id == receptacle_id)
+    meta = library.get(obj.asset).meta
+    if meta.surfaces:
+        return on_top, inside
+    if meta.articulation is not None and meta.articulation.interior:
+        return [], inside + on_top
+    why = f"{receptacle_id} has no surface to put things on"
+    failures.extend({"object": asset_id, "reason": why} for asset_id, _ in on_top)
+    out.requested += sum(n for _, n in on_top)
+    return [], inside
 
 
 def _interior_category(library: AssetLibrary, asset_id: str) -> str | None:

@@ -19,6 +19,7 @@ from holomj.physics.small_object_drops import (
 )
 from holomj.physics.spawn import populate
 from holomj.physics.surfaces_world import world_interior_surfaces
+from holomj.spec.plan import PlanObject, PlanSmallObject
 from tests.layout.choosers import CategoryChooser
 from tests.physics.spawn_helpers import receptacle_scene
 
@@ -154,3 +155,22 @@ def test_generate_fills_a_fridge_the_plan_put_nothing_on(default_library: AssetL
     assert record["receptacle"] == "rec" and record["placed"] == []
     assert 2 <= small.requested <= 4 and small.inside == len(record["inside"]) >= 1
     assert all(p["inside"] for p in small.picks)
+
+
+def test_what_is_planned_on_a_lidded_box_goes_inside_it(default_library: AssetLibrary) -> None:
+    # a toy box's lid moves: it has no top surface, so the toys planned on it go in it
+    scene = receptacle_scene("toy_box_art_000")
+    assert not default_library.get("toy_box_art_000").meta.surfaces
+    toys = PlanSmallObject(name="toy ball", category="toy_ball", quantity=2)
+    plan_obj = PlanObject(name="toy box", category="toy_box", on_top=[toys])
+    chooser = CategoryChooser(default_library)
+    small = drop_small_objects(scene, [("rec", plan_obj)], default_library, chooser, seed=1)
+    (record,) = small.receptacles
+    assert record["placed"] == [] and record["failures"] == []
+    assert len(record["inside"]) == 2 and small.inside == 2
+    # a receptacle with neither a top nor an inside reports them instead of failing
+    bare = receptacle_scene("bean_bag_000")
+    none = drop_small_objects(bare, [("rec", plan_obj)], default_library, chooser, seed=1)
+    (record,) = none.receptacles
+    assert none.requested == 2 and none.placed == 0
+    assert all("no surface to put things on" in f["reason"] for f in record["failures"])

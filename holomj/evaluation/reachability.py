@@ -6,6 +6,10 @@ where the nearest blocked cell is at least 0.2 m + half a cell away; ``share`` i
 cells connected to the entrance (the door named by navmap.json, else a door with one room) over
 all fitting cells, and ``coverage`` the free floor its body sweeps from there over all free
 floor. Per room: the share of that room's fitting cells reached.
+
+A pocket of fitting cells that lies wholly inside one floor object's footprint (the open inside
+of a squat rack's frame, a playpen, a walk-in shower's tray) is that object's interior, not floor
+the furniture cut off: it is left out of the fitting cells and reported as ``interior_m2``.
 """
 
 from __future__ import annotations
@@ -118,6 +122,7 @@ class ReachGrid:
     swept: np.ndarray
     room_names: list[str]
     entrance_found: bool
+    interior: np.ndarray | None = None  # pockets inside one object's footprint (not floor)
 
     def centres(self) -> tuple[np.ndarray, np.ndarray]:
         """World x and y of every cell's centre."""
@@ -142,6 +147,8 @@ def robot_reach(scene: Scene, radius: float = ROBOT_RADIUS_M) -> ReachGrid | Non
     clearance = ndimage.distance_transform_edt(free) * cell
     fits = free & (clearance >= radius + cell / 2 - 1e-9)
     labels, _ = ndimage.label(fits)
+    interior = object_interiors(scene, labels, origin, cell)
+    fits &= ~interior
     start = entrance(scene)
     seed_label = 0
     if start is not None:
@@ -171,7 +178,38 @@ def robot_reach(scene: Scene, radius: float = ROBOT_RADIUS_M) -> ReachGrid | Non
         swept=swept,
         room_names=list(names),
         entrance_found=bool(seed_label),
+        interior=interior,
     )
+
+
+def object_interiors(scene: Scene, labels: np.ndarray, origin: tuple, cell: float) -> np.ndarray:
+    """Cells of the labelled pockets that lie wholly inside one floor object's footprint."""
+    interior = np.zeros(labels.shape, dtype=bool)
+    if not labels.any():
+        return interior
+    ny, nx = labels.shape
+    sizes = np.bincount(labels.ravel())
+    for obj in scene.objects:
+        if obj.support is not None or obj.zmin >= 2.0 or obj.zmax <= 0.02:
+            continue
+        x0, y0, x1, y1 = obj.fp.bounds
+        c0 = max(0, int((x0 - origin[0]) / cell))
+        r0 = max(0, int((y0 - origin[1]) / cell))
+        c1 = min(nx, math.ceil((x1 - origin[0]) / cell))
+        r1 = min(ny, math.ceil((y1 - origin[1]) / cell))
+        window = labels[r0:r1, c0:c1]
+        found = np.unique(window[window > 0])
+        if not found.size:
+            continue
+        xs = origin[0] + (np.arange(c0, c1) + 0.5) * cell
+        ys = origin[1] + (np.arange(r0, r1) + 0.5) * cell
+        gx, gy = np.meshgrid(xs, ys)
+        inside = shapely.contains_xy(obj.fp, gx, gy)
+        for label in found:
+            cells = window == label
+            if int(np.count_nonzero(cells)) == int(sizes[label]) and bool(inside[cells].all()):
+                interior[r0:r1, c0:c1] |= cells
+    return interior
 
 
 def reachability(scene: Scene, radius: float = ROBOT_RADIUS_M) -> dict[str, Any]:
@@ -200,5 +238,8 @@ def reach_summary(grid: ReachGrid) -> dict[str, Any]:
         "method": grid.method,
         "robot_radius_m": grid.radius,
         "entrance_found": grid.entrance_found,
+        "interior_m2": round(float(grid.interior.sum()) * grid.cell**2, 4)
+        if grid.interior is not None
+        else 0.0,
         "per_room": per_room,
     }

@@ -58,3 +58,25 @@ def test_a_generated_scene_against_its_plan(tmp_path: Path, default_library) -> 
     assert rec["scores"]["navigability"]["score"] >= 0.95
     report = json.loads((out / "report.json").read_text())
     assert rec["scores"]["stability"]["total"] == len(report["objects"])
+
+
+def test_a_frames_open_inside_is_not_cut_off_floor(tmp_path: Path, default_library) -> None:
+    """The floor inside a squat rack's frame belongs to the rack; a pen of four crates is a
+    pocket the furniture cut off."""
+    from tests.evaluation.scenes import box, room_scene
+
+    rack = {"id": "gym.squat_rack_0", "asset": "squat_rack_000", "position": [2.0, 2.2, 0.0]}
+    pen = [
+        box("crate_0", "gym", (2.0, 1.2), (1.7, 0.1, 0.6)),
+        box("crate_1", "gym", (2.0, 2.8), (1.7, 0.1, 0.6)),
+        box("crate_2", "gym", (1.2, 2.0), (0.1, 1.5, 0.6)),
+        box("crate_3", "gym", (2.8, 2.0), (0.1, 1.5, 0.6)),
+    ]
+    verdicts = {}
+    for name, objects in (("rack", [{**rack, "room": "gym"}]), ("pen", pen)):
+        src = tmp_path / f"{name}.json"
+        src.write_text(json.dumps(room_scene(objects, room="gym", kind="gym")))
+        holomj.compile(src, tmp_path / name, library=default_library.root, check_seconds=0.0)
+        verdicts[name] = holomj.eval(tmp_path / name).details["navigability"]
+    assert verdicts["rack"]["share"] == 1.0 and verdicts["rack"]["interior_m2"] > 0.05
+    assert verdicts["pen"]["share"] < 0.97 and verdicts["pen"]["interior_m2"] == 0.0

@@ -53,6 +53,10 @@ from holomj.spec.walls import derive_walls
 MAX_PROMPT_CHARS = 2000
 GROWTH = 1.25  # a room grows by this factor in area when its defining furniture does not fit
 MAX_GROWTH = 2
+# ... or when less than this share of its free floor is reachable (the layout's own measure,
+# holomj.layout.open_pockets, stricter than the evaluator's: a 0.17 m robot's floor reached
+# through passages a 0.25 m one fits)
+REGROW_SHARE = 0.95
 FURNITURE_MODES = ("free", "static")
 
 
@@ -252,21 +256,22 @@ class _Run:
             self.log.info("retrieve", f"{picked} asset(s) chosen")
 
     def layout_stage(self) -> None:
-        """Floor plan, openings and furniture. A room whose defining furniture does not fit
-        even with its windows moved, and whose size the request left open, grows (up to
-        ``MAX_GROWTH`` times by ``GROWTH`` in area) and the house is laid out again."""
+        """Floor plan, openings and furniture. A room whose size the request left open grows (up
+        to ``MAX_GROWTH`` times by ``GROWTH`` in area) and the house is laid out again when its
+        defining furniture does not fit even with its windows moved, or when its furniture cuts
+        off free floor (less than ``REGROW_SHARE`` reachable)."""
         log = self.log
         with log.stage("layout"):
             plan, grown = self.plan, []
             for _ in range(MAX_GROWTH + 1):
                 shell, furnished = self._lay_out(plan)
-                short = [
-                    room
+                short = {
+                    room.id: why
                     for room, done in zip(plan.rooms, furnished)
                     if room.size is None
                     and room.area_m2 is not None
-                    and _missing_defining(room, done)
-                ]
+                    and (why := _why_grow(room, done))
+                }
                 if not short or len(grown) >= MAX_GROWTH:
                     break
                 plan, change = _grow(plan, short)
@@ -483,18 +488,29 @@ def _missing_defining(room: PlanRoom, done: RoomFurniture) -> list[str]:
     ]
 
 
-def _grow(plan: ScenePlan, rooms: list[PlanRoom]) -> tuple[ScenePlan, str]:
-    """``plan`` with ``rooms`` grown by ``GROWTH`` in area, and what changed, in words."""
-    grown = {r.id for r in rooms}
+def _why_grow(room: PlanRoom, done: RoomFurniture) -> str:
+    """Why ``room`` should grow after its furnishing ``done`` (empty when it need not): its
+    defining furniture did not fit, or its furniture cut off free floor a robot cannot reach."""
+    if _missing_defining(room, done):
+        return f"its {', '.join(sorted({o.name for o in room.objects if o.defining}))} fits"
+    share = done.layout.get("reachable_share")
+    if share is not None and share < REGROW_SHARE:
+        return f"its free floor stays reachable ({share:.0%} was)"
+    return ""
+
+
+def _grow(plan: ScenePlan, why: dict[str, str]) -> tuple[ScenePlan, str]:
+    """``plan`` with the rooms of ``why`` (room id -> the reason, in words) grown by ``GROWTH``
+    in area, and what changed, in words."""
+    rooms = [r for r in plan.rooms if r.id in why and r.area_m2 is not None]
     new_rooms = [
         r.model_copy(update={"area_m2": round(r.area_m2 * GROWTH, 1)})
-        if r.id in grown and r.area_m2 is not None
+        if r.id in why and r.area_m2 is not None
         else r
         for r in plan.rooms
     ]
     words = ", ".join(
-        f"{r.id} from {r.area_m2:.1f} to {r.area_m2 * GROWTH:.1f} m² so that its "
-        f"{', '.join(sorted({o.name for o in r.objects if o.defining}))} fits"
+        f"{r.id} from {r.area_m2:.1f} to {r.area_m2 * GROWTH:.1f} m² so that {why[r.id]}"
         for r in rooms
         if r.area_m2 is not None
     )

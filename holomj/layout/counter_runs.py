@@ -69,6 +69,7 @@ from shapely.geometry import Polygon
 
 from holomj.layout import geometry as geo
 from holomj.layout.constraints import GLOBAL_KINDS, Constraint, normalize_name
+from holomj.layout.open_pockets import ReachMeter
 from holomj.layout.place_relations import opening_gap
 from holomj.layout.room_problem import LayoutObject, PreparedRoom, RoomProblem
 from holomj.layout.solve import (
@@ -1268,4 +1269,5 @@ def split_result(
         solver_status=solved.solver_status,
         hard_checks=checks,
         warnings=[*prep.warnings, *solved.warnings],
+        reachable_share=round(ReachMeter(prep).pockets(prep.footprints_m(metres))[0], 4),
     )

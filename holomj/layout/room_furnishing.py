@@ -773,4 +773,5 @@ def _layout_record(result: LayoutResult) -> dict[str, Any]:
         "status": result.solver_status,
         "seconds": round(result.solve_time_s, 3),
         "hard_checks_ok": result.hard_checks.ok,
+        "reachable_share": result.reachable_share,
     }

@@ -454,8 +454,11 @@ class PreparedRoom:
 
     def footprints(self, poses: dict[int, tuple[int, int, int]]) -> list[tuple[float, ...]]:
         """The footprint rectangles (metres) of the objects at grid ``poses``."""
-        g = self.grid
-        return [self.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()]
+        return self.footprints_m(self.metres(poses))
+
+    def footprints_m(self, metres: dict[int, tuple[float, float, int]]) -> list[tuple[float, ...]]:
+        """The footprint rectangles of the objects at poses in metres ``{index: (x, y, k)}``."""
+        return [self.footprint(i, x, y, k) for i, (x, y, k) in metres.items()]
 
     # ------------------------------------------------------------------ evaluation
 

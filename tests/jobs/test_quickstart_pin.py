@@ -28,7 +28,9 @@ QUICKSTART_SEED = 7
 #   scene), generate puts things inside them, and an L's or U's corner square is left empty
 #   (a dead corner); re-pinned once at the end of that work, which also takes in the layout
 #   changes of the same day (open pockets), so it was perhaps stale before.
-SCENE_XML_SHA256 = "6b99c7a6169a727b66b5ba401b79c8badddbba33e0254ead0437e0308a699320"
+# - issue 14: a room whose furniture fences off floor a robot cannot reach grows (the kitchen,
+#   94 % reachable, from 13.6 to 17.0 m²), and the whole house is laid out again.
+SCENE_XML_SHA256 = "22449cb89753208fc572afc61b5c2ed26c4864a36b769ddcbcc7a49d4b3a3547"
 
 
 @pytest.mark.slow

@@ -71,13 +71,16 @@ def _request_in(
     name = _resolve_kind(state, request, room, index in put_on)
     if index in on_wall:
         _hang_flat_kind(state, name)
+    paired = None
     if request.generic and index in set(seats.values()):  # "a table with four chairs"
-        name = seating_table(state.kb, request.kind, _present(room)) or name
+        paired = seating_table(state.kb, request.kind, _present(room))
     elif index in seats:  # "six chairs around the table": the seat that goes with it
         table = _table_kind(state, requests[seats[index]], room)
-        name = seat_for(state.kb, request.kind, table, _present(room)) or name
+        paired = seat_for(state.kb, request.kind, table, _present(room))
     elif is_seat_word(state.kb, request) and room.get(name) is None:
-        name = _seat_at_room_table(state, request, room) or name
+        paired = _seat_at_room_table(state, request, room)
+    if paired is not None and paired not in _taken(room, request):
+        name = paired
     kind = state.object_kind(name)
     quantity = _quantity(request, kind, room)
     if kind.placement == "object":
@@ -163,13 +166,23 @@ def _resolve_kind(
         small = [k for k in kinds if state.kb.objects[k].placement == "object"]
         if small:
             return small[0]
+    taken = _taken(room, request)
     for want in kinds:
-        if room.get(want) is not None:
+        if room.get(want) is not None and want not in taken:
             return want
     for want in kinds:
-        if want in room.template.kinds():
+        if want in room.template.kinds() and want not in taken:
             return want
-    return kinds[0]
+    return next((want for want in kinds if want not in taken), kinds[0])
+
+
+def _taken(room: DraftRoom, request: ObjectRequest) -> set[str]:
+    """The kinds of ``room`` another phrase asked for: a generic word does not mean them ("an
+    office chair and two chairs for visitors" are three seats), unless it refers back to one
+    ("the chair")."""
+    if request.definite:
+        return set()
+    return {o.name for o in room.objects if o.requested and o.asked != request.phrase}
 
 
 FLAT_M = 0.05  # a small object this thin (a chart, a map, a print) can hang on a wall
@@ -244,7 +257,7 @@ def _add_object(
     obj = room.get(name)
     size = kind.size_for(request.size)
     if obj is None:
-        _replace_same_category(state, room, name, kind)
+        _replace_same_category(state, room, name, kind, request)
     if obj is None:
         variance = kind.variance if quantity > 1 else "same"
         obj = DraftObject(name=name, kind=kind, quantity=quantity, variance=variance)
@@ -254,6 +267,8 @@ def _add_object(
         if kind.placement == "floor" and state.kb.is_receptacle(kind.category):
             obj.on_top = draw_on_top(state, room, None, kind)
         room.objects.append(obj)
+    elif obj.requested and obj.asked != request.phrase and not request.definite:
+        obj.quantity = min(MAX_QUANTITY, obj.quantity + quantity)  # asked for again, elsewhere
     else:
         obj.quantity = quantity
         if request.size is not None:
@@ -265,16 +280,31 @@ def _add_object(
     obj.asked = request.phrase
 
 
-def _replace_same_category(state: DraftPlan, room: DraftRoom, name: str, kind: ObjectKind) -> None:
+def _replace_same_category(
+    state: DraftPlan, room: DraftRoom, name: str, kind: ObjectKind, request: ObjectRequest
+) -> None:
     """A requested kind takes the place of the template's object of the same category (a
-    twin bed asked for is the room's bed, not a second one)."""
+    twin bed asked for is the room's bed, not a second one); a generic word asked for takes the
+    place of the template's kinds that are named by it ("ten chairs" in a meeting room are its
+    chairs: the template's office chairs go)."""
+    named = _named_by_generic(state, request)
     for other in list(room.objects):
         if other.requested or other.name == name:
             continue
         same = other.kind.category == kind.category and other.kind.placement == kind.placement
-        if same or _another_bed(other.kind, kind):
+        generic = other.name in named and other.kind.placement == kind.placement
+        if same or generic or _another_bed(other.kind, kind):
             remove_object(room, other)
             state.note(f"the {name} asked for takes the place of the {other.name} in {room.id}")
+
+
+def _named_by_generic(state: DraftPlan, request: ObjectRequest) -> set[str]:
+    """The kinds of a generic request whose names end in its word ("office chair" for
+    "chairs"; not "armchair" or "stool", which the word only stands for at a stretch)."""
+    if not request.generic or request.kind not in state.kb.generics:
+        return set()
+    word = request.kind.split()[-1]
+    return {k for k in state.kb.generics[request.kind].kinds if k.split()[-1] == word}
 
 
 BED_CATEGORIES = frozenset({"bed", "bunk_bed", "single_bed", "crib", "hospital_bed", "loft_bed"})

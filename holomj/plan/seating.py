@@ -22,16 +22,52 @@ SEAT_RELATIONS = frozenset({"around", "adjacent_to", "near", "in_front_of", "fac
 
 
 def seat_pairs(kb: KnowledgeBase) -> dict[str, tuple[str, ...]]:
-    """Table kind -> the seat kinds the templates put per instance of it (in template order)."""
+    """Table kind -> the seat kinds the templates put per instance of it, or gather near it
+    (``seat`` without ``per``, "office chair | near, conference table"), in template order."""
     pairs: dict[str, list[str]] = {}
+    gathered: list[tuple[str, str]] = []
+    tables = set(kb.generics["table"].kinds) if "table" in kb.generics else set()
     for template in kb.rooms.values():
-        for _, objects, _ in template.object_sets():
+        for _, objects, lines in template.object_sets():
+            kinds = {o.object for o in objects}
             for obj in objects:
-                if obj.per is not None and obj.seat:
+                if not obj.seat:
+                    continue
+                if obj.per is not None:
                     seats = pairs.setdefault(obj.per, [])
                     if obj.object not in seats:
                         seats.append(obj.object)
+                    continue
+                target = _gathered_at(obj.object, lines)
+                if target in kinds and target in tables and _sat_at(kb, target):
+                    gathered.append((target, obj.object))
+    for table, seat in gathered:  # after the seats put per table
+        seats = pairs.setdefault(table, [])
+        if seat not in seats:
+            seats.append(seat)
     return {table: tuple(seats) for table, seats in pairs.items()}
+
+
+SEATED_TABLE_M = 0.6  # a table people sit at is at least this tall (not a coffee table)
+
+
+def _sat_at(kb: KnowledgeBase, table: str) -> bool:
+    """Whether ``table`` is tall enough to sit at."""
+    size = kb.objects[table].size
+    return size is not None and size[2] >= SEATED_TABLE_M
+
+
+def _gathered_at(seat: str, lines: Sequence[str]) -> str | None:
+    """The object a template's constraint line puts ``seat`` near, if any."""
+    for line in lines:
+        parts = [p.strip() for p in line.split("|")]
+        if parts[0] != seat:
+            continue
+        for part in parts[1:]:
+            words = [w.strip() for w in part.split(",")]
+            if len(words) == 2 and words[0] == "near":
+                return words[1]
+    return None
 
 
 def seat_kinds(kb: KnowledgeBase) -> frozenset[str]:

@@ -177,3 +177,49 @@ def test_twin_beds_are_a_pair_in_the_one_room_that_has_them() -> None:
     assert all(not found for rid, found in beds.items() if not rid.startswith("bedroom"))
     matching = _counts(plan_offline("A living room with matching armchairs.", 0))
     assert matching["armchair"] == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "table", "seat", "seats"),
+    [
+        (
+            "A meeting room with a long table in the middle, ten chairs around it and a "
+            "whiteboard.",
+            "conference table",
+            "office chair",
+            10,
+        ),
+        (
+            "A boardroom with a long oval table in the middle and twelve black leather chairs "
+            "around it.",
+            "conference table",
+            "executive chair",
+            12,
+        ),
+    ],
+)
+def test_chairs_asked_around_the_rooms_table_are_all_its_chairs(
+    text: str, table: str, seat: str, seats: int
+) -> None:
+    """The room's own table and seat kinds, and the template's seats do not come on top."""
+    plan = plan_offline(text, 0)
+    counts = _counts(plan)
+    assert counts.get(table) == 1 and counts.get(seat) == seats, counts
+    chairs = set(knowledge_base().generics["chair"].kinds) - {"armchair", "stool", "bench"}
+    assert sum(n for kind, n in counts.items() if kind in chairs) == seats, counts
+
+
+@pytest.mark.parametrize(
+    ("text", "kept", "total"),
+    [
+        ("A study with a desk, an office chair and two chairs for visitors.", "office chair", 3),
+        ("A living room with a sofa, two armchairs and a chair.", "armchair", 3),
+    ],
+)
+def test_chairs_asked_besides_other_seats_are_more_seats(text: str, kept: str, total: int) -> None:
+    """A generic word does not take over the kind another phrase asked for."""
+    counts = _counts(plan_offline(text, 0))
+    chairs = set(knowledge_base().generics["chair"].kinds)
+    asked = {"office chair": 1, "armchair": 2}[kept]
+    assert counts[kept] == asked, counts
+    assert sum(n for kind, n in counts.items() if kind in chairs) == total, counts

@@ -276,6 +276,7 @@ def furnish_room(
     for item in result.unplaced:
         out.unplaced.append({"object": item.id, "stage": "layout", "reason": item.reason})
     floor_items: list[FloorItem] = []
+    placed_of: dict[str, int] = {}  # plan object -> its instances placed so far
     for instance, placement in result.placements.items():
         asset_id = assets.floor[instance]
         meta = library.get(asset_id).meta
@@ -294,8 +295,11 @@ def furnish_room(
         front = (round(math.cos(yaw), 9), round(math.sin(yaw), 9))
         floor_items.append(FloorItem(oid, _footprint(placement), meta.size[2], front))
         plan_obj = by_name[instance.rsplit("-", 1)[0]]
-        if plan_obj.on_top:
-            out.receptacles.append((oid, plan_obj))
+        nth = placed_of.get(plan_obj.name, 0)
+        placed_of[plan_obj.name] = nth + 1
+        on_top = [s for s in plan_obj.on_top if s.instances is None or nth < s.instances]
+        if on_top:
+            out.receptacles.append((oid, plan_obj.model_copy(update={"on_top": on_top})))
     _lay_rugs(plan_room, room, context, assets.floor, result, library, out)
     hung_for = front_lookers(plan_room, grid)  # boards hang where the front row looks
     _hang(hung_for, room, context, windows, assets.wall, floor_items, library, seed, out)

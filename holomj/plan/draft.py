@@ -22,13 +22,24 @@ MAX_QUANTITY = 40  # PlanObject's limit
 
 @dataclass
 class DraftSmall:
-    """Small objects of one kind on a receptacle (``quantity`` on each receptacle instance)."""
+    """Small objects of one kind on a receptacle (``quantity`` on each receptacle instance, or
+    on the first ``instances`` of them)."""
 
     name: str
     category: str
     quantity: int
     variance: str = "varied"
     requested: bool = False
+    instances: int | None = None
+
+
+def spread(total: int, holders: int) -> tuple[int, int | None]:
+    """``total`` small objects over ``holders`` receptacle instances: how many on each, and on
+    how many of them (None: all). A printer for eight desks is one printer on one desk, ten
+    books for eight shelves two on each of five."""
+    each = max(1, -(-total // max(1, holders)))
+    used = -(-total // each)
+    return each, (used if used < holders else None)
 
 
 @dataclass

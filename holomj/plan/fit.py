@@ -233,14 +233,11 @@ def _limit_receptacles(state: DraftPlan, room: DraftRoom) -> None:
     for obj in order:
         if count <= cap:
             break
-        if any(s.requested for s in obj.on_top):
-            names = ", ".join(sorted({s.name for s in obj.on_top if s.requested}))
-            state.note(
-                f"only {cap} receptacles per room get small objects; {names} on the "
-                f"{obj.name} left out"
-            )
-        obj.on_top = []
-        count -= obj.quantity
+        # what the prompt asked for stays (the printer on one of eight desks); the rest goes
+        asked = [s for s in obj.on_top if s.requested]
+        obj.on_top = asked
+        if not asked:
+            count -= obj.quantity
 
 
 def _note_drops(

@@ -11,8 +11,6 @@ plural without a number 2, 3 or 4 by the room's floor area (:data:`PLURAL_AREAS_
 
 from __future__ import annotations
 
-import math
-
 from holomj.plan.draft import (
     MAX_QUANTITY,
     DraftObject,
@@ -21,6 +19,7 @@ from holomj.plan.draft import (
     DraftSmall,
     plural_name,
     remove_object,
+    spread,
 )
 from holomj.plan.furnish import draw_on_top
 from holomj.plan.knowledge import ObjectKind
@@ -356,17 +355,20 @@ def _add_small(
             break
         holder.on_top = [s for s in holder.on_top if s.requested]
         room_left = cap - sum(s.quantity for s in holder.on_top)
-        each = min(room_left, math.ceil(left / holder.quantity))
+        each, instances = spread(left, holder.quantity)
+        each = min(room_left, each)
         if each <= 0:
             continue
         existing = next((s for s in holder.on_top if s.name == name), None)
         if existing is not None:
             existing.quantity += each
+            existing.instances = None
+            instances = None
         else:
             holder.on_top.append(
-                DraftSmall(name, kind.category, each, kind.variance, requested=True)
+                DraftSmall(name, kind.category, each, kind.variance, True, instances)
             )
-        left -= each * holder.quantity
+        left -= each * (instances or holder.quantity)
     if left > 0:
         placed = quantity - left
         state.note(

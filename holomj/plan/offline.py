@@ -176,6 +176,7 @@ def _plan_object(
                 category=s.category,
                 quantity=s.quantity,
                 variance=s.variance,  # type: ignore[arg-type]
+                instances=s.instances,
             )
             for s in obj.on_top
         ],

@@ -33,6 +33,7 @@ from holomj.plan.draft import (
     DraftRoom,
     DraftSmall,
     plural_name,
+    spread,
 )
 from holomj.plan.prompt_relations import RelationRequest
 from holomj.spec.plan import PlanRelation
@@ -165,6 +166,8 @@ def _object_relation(
     if kind == "on":
         if small and other is not None and other.floor:
             _move_small(room, name, other)
+            if {"each", "every"} & set(phrase.split()):
+                _on_each(other, name)
             _add(room, PlanRelation(subject=name, kind="on", target=target, phrase=phrase))
         elif not small:
             state.note(f"'{name} {phrase}': only small objects are put on others; not kept")
@@ -220,25 +223,37 @@ def _stands_on(kind: str, small: bool, obj: DraftObject | None, other: DraftObje
     )
 
 
+def _on_each(holder: DraftObject, name: str) -> None:
+    """"A computer on each desk", "two books on every shelf": the count asked goes on every
+    instance of the holder."""
+    for item in holder.on_top:
+        if item.name == name and item.instances is not None:
+            item.quantity, item.instances = item.quantity * item.instances, None
+
+
 def _move_small(room: DraftRoom, name: str, holder: DraftObject) -> None:
-    """Small objects ``name`` go onto ``holder`` alone, with the count they had."""
+    """Small objects ``name`` go onto ``holder`` alone, with the count the prompt asked for
+    (the template's own of that name go)."""
     count = 0
     template: DraftSmall | None = None
     for obj in room.objects:
         for item in list(obj.on_top):
-            if item.name == name and obj is not holder:
-                count += item.quantity * obj.quantity
+            if item.name != name or (obj is holder and item.requested):
+                continue
+            obj.on_top.remove(item)
+            if item.requested:
+                count += item.quantity * (item.instances or obj.quantity)
                 template = template or item
-                obj.on_top.remove(item)
     if template is None:
         return
     existing = next((s for s in holder.on_top if s.name == name), None)
-    each = max(1, -(-count // holder.quantity))
+    each, instances = spread(count, holder.quantity)
     if existing is not None:
         existing.quantity += each
+        existing.instances = None
     else:
         holder.on_top.append(
-            DraftSmall(name, template.category, each, template.variance, requested=True)
+            DraftSmall(name, template.category, each, template.variance, True, instances)
         )
 
 

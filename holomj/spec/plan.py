@@ -45,6 +45,10 @@ class PlanSmallObject(FrozenModel):
     )
     quantity: Annotated[int, Field(ge=1, le=30)] = 1
     variance: Variance = "varied"
+    instances: Annotated[int, Field(ge=1, le=40)] | None = Field(
+        default=None,
+        description="On this many of the receptacle's instances (the first ones); all if null.",
+    )
 
 
 class PlanObject(FrozenModel):

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 
+from holomj.plan.draft import spread
 from holomj.plan.knowledge import knowledge_base
 from holomj.plan.offline import plan_offline
 from holomj.plan.prompt import parse_prompt
@@ -25,7 +26,8 @@ def _small(plan: ScenePlan) -> dict[str, int]:
     for room in plan.rooms:
         for obj in room.objects:
             for item in obj.on_top:
-                out[item.name] = out.get(item.name, 0) + item.quantity * obj.quantity
+                holders = item.instances or obj.quantity
+                out[item.name] = out.get(item.name, 0) + item.quantity * holders
     return out
 
 
@@ -223,3 +225,41 @@ def test_chairs_asked_besides_other_seats_are_more_seats(text: str, kept: str, t
     asked = {"office chair": 1, "armchair": 2}[kept]
     assert counts[kept] == asked, counts
     assert sum(n for kind, n in counts.items() if kind in chairs) == total, counts
+
+
+def test_spread_puts_a_few_small_objects_on_some_of_many_receptacles() -> None:
+    assert spread(1, 8) == (1, 1)
+    assert spread(10, 8) == (2, 5)
+    assert spread(8, 8) == (1, None)
+    assert spread(3, 1) == (3, None)
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "small", "total"),
+    [
+        (
+            "An open office with eight desks, eight office chairs and a printer.",
+            "desk",
+            "printer",
+            1,
+        ),
+        ("A computer lab with twenty desks in rows and a computer on each desk.", "desk", None, 20),
+        (
+            "A library with ten bookshelves, four study tables and three computers on a desk.",
+            "desk",
+            None,
+            3,
+        ),
+    ],
+)
+def test_small_objects_asked_for_come_in_the_number_asked(
+    text: str, holder: str, small: str | None, total: int
+) -> None:
+    """Not one per receptacle instance, and not dropped for a room's receptacle cap; the
+    template's own of that kind do not come on top."""
+    plan = plan_offline(text, 0)
+    counts = _small(plan)
+    kinds = {small} if small else {"laptop", "desktop computer", "computer"}
+    assert sum(n for name, n in counts.items() if name in kinds) == total, counts
+    holders = [o for r in plan.rooms for o in r.objects if any(s.name in kinds for s in o.on_top)]
+    assert [o.name for o in holders] == [holder]

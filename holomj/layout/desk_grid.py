@@ -946,7 +946,9 @@ def _cut_off(
 ) -> float:
     """The free floor (m²) inside the blocks that no robot reaches from a door, not counting
     pockets up to :data:`NOOK_M2`."""
-    meter = ReachMeter(prep)
+    # the grid's aisles are built to measure (at least 0.6 m) and its seats are smaller than
+    # their footprints: a navigation map's cells do not close them, so footprints stay as they are
+    meter = ReachMeter(prep, nav_cells=False)
     if not meter.applicable:
         return 0.0
     rects = [

@@ -35,9 +35,17 @@ Pose = tuple[int, int, int]
 ROBOT_RADIUS_M = 0.2
 # Free floor is where a slightly smaller robot fits (what another measure may count as free); it
 # is reached only through passages a slightly larger one fits through, so that a move counts
-# only when it opens a passage with room to spare or closes the pocket.
+# only when it opens a passage with room to spare or closes the pocket. Passages are judged
+# between footprints grown to the navigation map's cells (a map marks a cell blocked wherever
+# furniture touches it, so a passage there is up to a cell narrower on each side: 0.5 m between
+# two desks is closed to a 0.2 m robot); the desk grid, whose aisles are built to measure and
+# whose seats are smaller than their footprints, judges them between the bare footprints.
 FREE_RADIUS_M = 0.17
-PASSAGE_RADIUS_M = 0.25
+PASSAGE_RADIUS_M = 0.25  # between bare footprints
+NAV_CELL_M = 0.05  # the navigation map's cells, on the world grid (holomj.robots.occupancy)
+# ... and the robot that must pass between footprints grown to them: an evaluator's 0.2 m robot
+# fits where the blocked cells are 0.2 m away, this one with a little to spare
+NAV_PASSAGE_RADIUS_M = 0.225
 CELL_M = 0.05
 TARGET_SHARE = 0.985
 MAX_SHIFT_M = 0.8
@@ -52,10 +60,12 @@ MAX_TRIALS_SHORT = 1500  # ... when less than TEMPLATE_SHARE of the floor is rea
 class ReachMeter:
     """The reachable share of a room's free floor for given footprints (empty-room work once)."""
 
-    def __init__(self, prep: PreparedRoom) -> None:
+    def __init__(self, prep: PreparedRoom, *, nav_cells: bool = True) -> None:
+        self.nav_cells = nav_cells  # grow footprints to the navigation map's cells for passages
+        self.passage = NAV_PASSAGE_RADIUS_M if nav_cells else PASSAGE_RADIUS_M
         self.raster = geo.Raster.around(prep.room, CELL_M)
         self.base_free = geo.free_walk_mask(prep.room, [], self.raster, FREE_RADIUS_M)
-        self.base_pass = geo.free_walk_mask(prep.room, [], self.raster, PASSAGE_RADIUS_M)
+        self.base_pass = geo.free_walk_mask(prep.room, [], self.raster, self.passage)
         xs, ys = self.raster.centres()
         self.xs, self.ys = xs, ys
         seeds = np.zeros(self.base_free.shape, dtype=bool)
@@ -63,7 +73,7 @@ class ReachMeter:
             seeds |= np.asarray(shapely.contains_xy(zone, xs, ys), dtype=bool)
         self.seeds = seeds
         self.applicable = bool((seeds & self.base_pass).any())
-        steps = int(np.ceil((PASSAGE_RADIUS_M - FREE_RADIUS_M) / CELL_M)) + 1
+        steps = int(np.ceil((self.passage - FREE_RADIUS_M) / CELL_M)) + 1
         self.sweep = ndimage.generate_binary_structure(2, 2)
         self.sweep_steps = steps
 
@@ -76,7 +86,11 @@ class ReachMeter:
         """The reachable share, the mask of free cells not reachable from a door and the mask
         of those reachable."""
         free = self._clear_of(self.base_free, rects, FREE_RADIUS_M)
-        passable = self._clear_of(self.base_pass, rects, PASSAGE_RADIUS_M)
+        passable = self._clear_of(
+            self.base_pass,
+            [_to_nav_cells(r) for r in rects] if self.nav_cells else rects,
+            self.passage,
+        )
         total = int(free.sum())
         if total == 0 or not self.applicable:
             return 1.0, np.zeros_like(free), free
@@ -109,6 +123,19 @@ class ReachMeter:
             dy = np.maximum(np.maximum(ymin - ys, ys - ymax), 0.0)
             free[i0:i1, j0:j1] &= dx * dx + dy * dy >= radius * radius
         return free
+
+
+def _to_nav_cells(rect: Sequence[float]) -> tuple[float, float, float, float]:
+    """A footprint grown to the navigation map's cells it touches: a map marks a cell blocked
+    wherever furniture meets it, so a passage there is up to a cell narrower on each side."""
+    xmin, ymin, xmax, ymax = rect
+    c = NAV_CELL_M  # a cell that only touches the footprint's edge is blocked too
+    return (
+        float((np.ceil(xmin / c - 1e-6) - 1) * c),
+        float((np.ceil(ymin / c - 1e-6) - 1) * c),
+        float((np.floor(xmax / c + 1e-6) + 1) * c),
+        float((np.floor(ymax / c + 1e-6) + 1) * c),
+    )
 
 
 def reachable_share(prep: PreparedRoom, poses: dict[int, Pose]) -> float:

@@ -722,6 +722,7 @@ def _hang(
     above = {o.name: o.above for o in plan_room.objects if o.placement == "wall"}
     faced_by = {o.name: o.faced_by for o in plan_room.objects if o.placement == "wall"}
     counts = {o.name: o.quantity for o in plan_room.objects if o.placement == "floor"}
+    asked = {o.name for o in plan_room.objects if o.requested}
     requests = []
     asset_of = {object_id(room.id, instance): a for instance, a in assets.items()}
     for instance, asset_id in assets.items():
@@ -736,6 +737,7 @@ def _hang(
                 kind=WALL_KINDS.get(meta.category, "other"),
                 above=_paired(room.id, instance, target, counts) if target else None,
                 faced_by=_paired(room.id, instance, looker, counts) if looker else None,
+                optional=instance.rsplit("-", 1)[0] not in asked,
             )
         )
     if not requests:

@@ -102,6 +102,9 @@ ABOVE_GAP_M = 0.1  # between a floor object's top and the wall object above it
 NEAR_WALL_M = 0.3  # furniture closer than object depth + this to the face counts as in front
 FREE_STEP_M = 0.05
 DEEP_M = 0.2  # a wall object deeper than this (a wall cabinet) narrows the floor below it
+HEAD_BAND_M = 2.0  # ... when it hangs lower than this over the floor (the navigation band)
+AGAINST_WALL_M = 0.15  # furniture this close to the wall stands under a wall object there
+FRONT_CLEAR_M = 0.9  # ... and, over open floor, wants this much free floor in front of it
 DOOR_SIDE_M = 0.6  # kept free beside a door by a deep wall object
 
 
@@ -117,6 +120,10 @@ class WallObjectRequest(FrozenModel):
     )
     height_m: Annotated[float, Field(ge=0.0, le=20.0)] | None = Field(
         default=None, description="Height of the object's bottom; default by kind."
+    )
+    optional: bool = Field(
+        default=False,
+        description="Not asked for: a wall cabinet that would narrow the way is left out.",
     )
 
 
@@ -430,10 +437,17 @@ def _place_free(
             cursor = max(cursor, b1)
     if not stretches:
         return f"no free stretch of wall {width:.2f} m wide at {z0:.2f}-{z1:.2f} m"
+    if depth > DEEP_M and z0 < HEAD_BAND_M:
+        # a wall cabinet hangs over furniture below it (a counter run), not over the floor
+        # people and robots walk on, when it can
+        for face, t in _over_furniture(stretches, floor, req.size, z0, placed):
+            return face, t
     jitter = rng.uniform(0.0, 0.1, size=len(stretches))
     order = sorted(
         range(len(stretches)), key=lambda i: -(stretches[i][1] - stretches[i][0] + float(jitter[i]))
     )
+    low_and_deep = depth > DEEP_M and z0 < HEAD_BAND_M
+    fenced: tuple[WallFace, float] | None = None  # the first spot that narrows a way past
     for i in order:
         a, b, face = stretches[i]
         candidates = [(a + b) / 2]
@@ -444,8 +458,69 @@ def _place_free(
         for t in candidates:
             if hits_placed(face_rect(face, t, width, depth), z0, z1, placed):
                 continue
-            return face, round(t, 3) if _fits_within(round(t, 3), width, a, b) else t
+            spot = face, round(t, 3) if _fits_within(round(t, 3), width, a, b) else t
+            if low_and_deep and _narrows_way(face, t, width, depth, floor):
+                fenced = fenced or spot
+                continue
+            return spot
+    if fenced is not None and not req.optional:
+        return fenced
+    if fenced is not None:
+        return (
+            f"no counter to hang over, and every free stretch of wall has furniture within "
+            f"{FRONT_CLEAR_M:.1f} m of its front (it would narrow the way past it)"
+        )
     return f"every free stretch of wall {width:.2f} m wide is taken by other wall objects"
+
+
+def _narrows_way(
+    face: WallFace, t: float, width: float, depth: float, floor: Sequence[FloorItem]
+) -> bool:
+    """Whether floor furniture stands within ``FRONT_CLEAR_M`` of the front of a deep wall
+    object hung over open floor at ``t`` (the way between them would be too narrow)."""
+    front = face_rect(face, t, width, depth + FRONT_CLEAR_M)
+    return any(item.footprint.intersects(front) for item in floor)
+
+
+def _over_furniture(
+    stretches: Sequence[tuple[float, float, WallFace]],
+    floor: Sequence[FloorItem],
+    size: tuple[float, float, float],
+    z0: float,
+    placed: Sequence[PlacedBox],
+) -> list[tuple[WallFace, float]]:
+    """Positions on the free ``stretches`` where a deep wall object of ``size`` hangs wholly
+    over floor furniture against the wall that stays below its bottom ``z0`` (the longest run
+    of such furniture first, centred on it)."""
+    width, depth, height = size
+    out: list[tuple[float, WallFace, float]] = []
+    for a, b, face in stretches:
+        near = face_band(face, AGAINST_WALL_M)  # furniture against the wall: under the object
+        spans = sorted(
+            (min(ts), max(ts))
+            for item in floor
+            if item.height <= z0 and item.footprint.intersects(near)
+            for ts in [[face.wall.locate(p)[0] for p in item.footprint.exterior.coords]]
+        )
+        merged: list[list[float]] = []
+        for u0, u1 in spans:  # counter modules side by side make one run
+            if merged and u0 <= merged[-1][1] + 0.02:
+                merged[-1][1] = max(merged[-1][1], u1)
+            else:
+                merged.append([u0, u1])
+        for u0, u1 in merged:
+            lo, hi = max(a, u0) + width / 2, min(b, u1) - width / 2
+            if lo > hi + 1e-9:
+                continue
+            middle = (lo + hi) / 2
+            steps = int((hi - lo) / 2 / FREE_STEP_M)
+            for k in [0, *(j for i in range(1, steps + 1) for j in (-i, i))]:
+                t = round(middle + k * FREE_STEP_M, 3)
+                if not hits_placed(face_rect(face, t, width, depth), z0, z0 + height, placed):
+                    out.append((u1 - u0, face, t))
+                    break
+    out.sort(key=lambda c: -c[0])
+    return [(face, t) for _, face, t in out]
 
 
 def _fits_within(t: float, width: float, a: float, b: float) -> bool:

@@ -224,7 +224,7 @@ def _stands_on(kind: str, small: bool, obj: DraftObject | None, other: DraftObje
 
 
 def _on_each(holder: DraftObject, name: str) -> None:
-    """"A computer on each desk", "two books on every shelf": the count asked goes on every
+    """ "A computer on each desk", "two books on every shelf": the count asked goes on every
     instance of the holder."""
     for item in holder.on_top:
         if item.name == name and item.instances is not None:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from shapely.geometry import Polygon, box
 
-from holomj.layout.open_pockets import open_pockets, reachable_share
+from holomj.layout.open_pockets import ReachMeter, open_pockets, reachable_share
 from holomj.layout.room_problem import PreparedRoom, problem_from_data
 from holomj.layout.rugs import Anchor, RugPose, _footprint, lay_rug, lay_rugs
 from holomj.layout.solve import hard_checks, solve_room
@@ -158,3 +158,25 @@ def test_a_pocket_fenced_by_a_bed_and_a_wardrobe_opens_with_the_nightstand_pushe
     assert reachable_share(prep, opened) >= 0.97
     kept = satisfied_weight(prep, prep.metres(poses))
     assert satisfied_weight(prep, prep.metres(opened)) >= kept - 1e-9
+
+
+def test_a_half_metre_gap_is_no_way_through_on_a_navigation_maps_cells() -> None:
+    """Two desks 0.5 m apart fence a pocket: bare footprints leave a 0.2 m robot room to pass,
+    but a navigation map, which blocks every 5 cm cell a desk touches, closes the gap; the
+    layout's measure judges passages as the map sees them (and 0.6 m is open either way)."""
+    desk = {"width": 1.4, "depth": 0.7, "height": 0.75}
+    data = {
+        "polygon": [[0, 0], [4.2, 0], [4.2, 2.85], [0, 2.85]],
+        "size_unit": "m",
+        "doors": [{"id": "d", "position": [2.5, 0], "width": 0.9}],
+        "objects": [{"id": "desk0", **desk}, {"id": "desk1", **desk}],
+    }
+    prep = PreparedRoom(problem_from_data(data))
+    # desk0 against the north wall, desk1 below and to its right: the floor north of desk1 is
+    # reached only through the gap between the desks' ends
+    for gap, closed in ((0.5, True), (0.6, False)):
+        rects = [(0.65, 2.05, 2.05, 2.75), (2.05 + gap, 1.1, 3.45 + gap, 1.8)]
+        nav = ReachMeter(prep).pockets(rects)[0]
+        bare = ReachMeter(prep, nav_cells=False).pockets(rects)[0]
+        assert bare >= 0.97
+        assert (nav < 0.9) is closed, (gap, nav)

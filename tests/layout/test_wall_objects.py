@@ -315,3 +315,44 @@ def test_a_deep_wall_object_keeps_clear_beside_a_door_and_a_flat_one_need_not() 
         t_door, _ = face_of_door.locate(door.position)
         gap = abs(t - t_door) - request.size[0] / 2 - door.width / 2
         assert gap >= clear - 1e-6
+
+
+def test_a_wall_cabinet_hangs_over_the_counter_run_not_over_the_floor() -> None:
+    room = _rect("r", "kitchen", 0, 0, 4.0, 3.0)
+    walls = derive_walls([room])
+    counters = [
+        ("counter", box(0.05, 0.6, 0.65, 2.4), 0.9),
+        ("table", box(1.8, 1.0, 2.6, 2.0), 0.75),
+    ]
+    cabinet = WallObjectRequest(id="cab", size=(0.8, 0.35, 0.7), kind="wall_cabinet")
+    for seed in range(5):
+        placed, _ = place_wall_objects(
+            room, walls, [], [], counters, [cabinet], np.random.default_rng(seed)
+        )
+        assert len(placed) == 1
+        p = placed[0]
+        assert p.x < 0.4 and 0.6 + 0.4 - 1e-6 <= p.y <= 2.4 - 0.4 + 1e-6, p  # over the counter
+
+
+def test_an_optional_wall_cabinet_that_would_narrow_the_way_is_left_out() -> None:
+    room = _rect("r", "kitchen", 0, 0, 4.0, 3.0)
+    walls = derive_walls([room])
+    # furniture 0.5 m in front of every wall: no counter to hang over, no wall with room before it
+    ring = [
+        ("s", box(0.6, 0.6, 3.4, 0.9), 0.75),
+        ("n", box(0.6, 2.1, 3.4, 2.4), 0.75),
+        ("w", box(0.6, 0.9, 0.9, 2.1), 0.75),
+        ("e", box(3.1, 0.9, 3.4, 2.1), 0.75),
+    ]
+    size = (0.8, 0.35, 0.7)
+    optional = WallObjectRequest(id="cab", size=size, kind="wall_cabinet", optional=True)
+    placed, unplaced = place_wall_objects(
+        room, walls, [], [], ring, [optional], np.random.default_rng(0)
+    )
+    assert placed == [] and "narrow the way" in unplaced[0].reason
+    asked = WallObjectRequest(id="cab", size=size, kind="wall_cabinet")
+    placed, _ = place_wall_objects(room, walls, [], [], ring, [asked], np.random.default_rng(0))
+    assert len(placed) == 1  # asked for: it still hangs
+    painting = WallObjectRequest(id="pic", size=(0.8, 0.03, 0.6), kind="painting", optional=True)
+    placed, _ = place_wall_objects(room, walls, [], [], ring, [painting], np.random.default_rng(0))
+    assert len(placed) == 1  # flat: it narrows nothing

@@ -31,6 +31,11 @@ height for ``open`` doors; an object deeper than ``DEEP_M``, a wall cabinet, als
 its frame, another wall object (checked in 3D, so objects on two walls meeting at a corner are
 caught), or floor furniture near the wall that rises above the object's bottom.
 
+A deep object hung lower than ``HEAD_BAND_M`` (a wall cabinet) goes over furniture against the
+wall (a counter run) when it can; over open floor it wants ``FRONT_CLEAR_M`` free in front of it
+and ``SIDE_CLEAR_M`` beside its ends, so that it narrows no way and cuts off no corner, and one
+the prompt did not ask for is left out (with the reason) rather than hung where it would.
+
 Curtains and blinds (kinds ``curtains`` and ``blinds``, ``DRESSING_KINDS``) are the exception:
 they hang at the room's windows, sized to them, and are placed before everything else (see
 :mod:`holomj.layout.window_dressing`). The geometry of wall faces is in
@@ -105,6 +110,7 @@ DEEP_M = 0.2  # a wall object deeper than this (a wall cabinet) narrows the floo
 HEAD_BAND_M = 2.0  # ... when it hangs lower than this over the floor (the navigation band)
 AGAINST_WALL_M = 0.15  # furniture this close to the wall stands under a wall object there
 FRONT_CLEAR_M = 0.9  # ... and, over open floor, wants this much free floor in front of it
+SIDE_CLEAR_M = 0.5  # ... and beside its ends
 DOOR_SIDE_M = 0.6  # kept free beside a door by a deep wall object
 
 
@@ -468,7 +474,8 @@ def _place_free(
     if fenced is not None:
         return (
             f"no counter to hang over, and every free stretch of wall has furniture within "
-            f"{FRONT_CLEAR_M:.1f} m of its front (it would narrow the way past it)"
+            f"{FRONT_CLEAR_M:.1f} m of its front or {SIDE_CLEAR_M:.1f} m of its ends (it would "
+            f"narrow the way past it or cut off a corner)"
         )
     return f"every free stretch of wall {width:.2f} m wide is taken by other wall objects"
 
@@ -477,8 +484,9 @@ def _narrows_way(
     face: WallFace, t: float, width: float, depth: float, floor: Sequence[FloorItem]
 ) -> bool:
     """Whether floor furniture stands within ``FRONT_CLEAR_M`` of the front of a deep wall
-    object hung over open floor at ``t`` (the way between them would be too narrow)."""
-    front = face_rect(face, t, width, depth + FRONT_CLEAR_M)
+    object hung over open floor at ``t``, or within ``SIDE_CLEAR_M`` of its ends (the way
+    between them would be too narrow, or the corner beside it cut off)."""
+    front = face_rect(face, t, width + 2 * SIDE_CLEAR_M, depth + FRONT_CLEAR_M)
     return any(item.footprint.intersects(front) for item in floor)
 
 

@@ -356,3 +356,30 @@ def test_an_optional_wall_cabinet_that_would_narrow_the_way_is_left_out() -> Non
     painting = WallObjectRequest(id="pic", size=(0.8, 0.03, 0.6), kind="painting", optional=True)
     placed, _ = place_wall_objects(room, walls, [], [], ring, [painting], np.random.default_rng(0))
     assert len(placed) == 1  # flat: it narrows nothing
+
+
+def test_a_wall_cabinet_over_open_floor_does_not_cut_off_the_corner_beside_it() -> None:
+    """Only the west wall is free (a fridge in its south corner, a counter under a window along
+    the north wall, wardrobes on the others): a cabinet in its middle would end 0.2 m short of
+    the counter and cut off the corner behind it, so the cabinet, not asked for, is left out;
+    one asked for still hangs."""
+    room = _rect("r", "kitchen", 0, 0, 4.0, 3.2)
+    walls = derive_walls([room])
+    floor = [
+        ("counter", box(0.75, 2.55, 4.0, 3.15), 0.9),
+        ("fridge", box(0.05, 0.05, 0.75, 0.75), 1.8),
+        ("table", box(2.4, 0.9, 3.2, 1.9), 0.75),
+        ("wardrobes_s", box(0.8, 0.05, 4.0, 0.65), 2.0),
+        ("wardrobes_e", box(3.4, 0.65, 4.0, 2.5), 2.0),
+    ]
+    window = Window(id="w", rooms=["r"], position=(2.4, 3.2), width=3.0, height=1.2)
+    size = (0.8, 0.35, 0.7)
+    for optional in (True, False):
+        request = WallObjectRequest(id="cab", size=size, kind="wall_cabinet", optional=optional)
+        placed, unplaced = place_wall_objects(
+            room, walls, [], [window], floor, [request], np.random.default_rng(0)
+        )
+        if optional:
+            assert placed == [] and "cut off a corner" in unplaced[0].reason
+        else:
+            assert len(placed) == 1 and placed[0].x < 0.4  # on the west wall all the same

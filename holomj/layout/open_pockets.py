@@ -55,6 +55,7 @@ CUT_OFF_SHARE = 0.9  # below this share a door is cut off: moves may then cost s
 TEMPLATE_SHARE = 0.97  # below this share moves may cost the templates' (not the prompt's) ones
 MAX_TRIALS = 600  # poses tried in all, so that a crowded room stays fast
 MAX_TRIALS_SHORT = 1500  # ... when less than TEMPLATE_SHARE of the floor is reachable
+MAX_WINDOWS = 20000  # rect masks a meter keeps
 
 
 class ReachMeter:
@@ -62,6 +63,7 @@ class ReachMeter:
 
     def __init__(self, prep: PreparedRoom, *, nav_cells: bool = True) -> None:
         self.nav_cells = nav_cells  # grow footprints to the navigation map's cells for passages
+        self._windows: dict[tuple, tuple[int, int, int, int, np.ndarray] | None] = {}
         self.passage = NAV_PASSAGE_RADIUS_M if nav_cells else PASSAGE_RADIUS_M
         self.raster = geo.Raster.around(prep.room, CELL_M)
         self.base_free = geo.free_walk_mask(prep.room, [], self.raster, FREE_RADIUS_M)
@@ -108,21 +110,39 @@ class ReachMeter:
         """:func:`geo.clear_of`, working only on the cells around each rect (the same mask,
         many times faster in a large room: the poses tried are many)."""
         free = free.copy()
+        for rect in rects:
+            window = self._window(tuple(rect), radius)
+            if window is not None:
+                i0, i1, j0, j1, clear = window
+                free[i0:i1, j0:j1] &= clear
+        return free
+
+    def _window(
+        self, rect: tuple[float, ...], radius: float
+    ) -> tuple[int, int, int, int, np.ndarray] | None:
+        """The cells around ``rect`` and which of them are at least ``radius`` from it (kept:
+        most poses tried move one or two objects, and the others' windows are the same)."""
+        key = (rect, radius)
+        if key in self._windows:
+            return self._windows[key]
+        if len(self._windows) > MAX_WINDOWS:
+            self._windows.clear()
+        xmin, ymin, xmax, ymax = rect
         r = self.raster
-        nx, ny = free.shape
-        for xmin, ymin, xmax, ymax in rects:
-            # one cell more than the radius each way: the cells left out are farther than it
-            i0 = max(int(np.floor((xmin - radius - r.x0) / r.cell)) - 1, 0)
-            i1 = min(int(np.ceil((xmax + radius - r.x0) / r.cell)) + 1, nx)
-            j0 = max(int(np.floor((ymin - radius - r.y0) / r.cell)) - 1, 0)
-            j1 = min(int(np.ceil((ymax + radius - r.y0) / r.cell)) + 1, ny)
-            if i0 >= i1 or j0 >= j1:
-                continue
+        nx, ny = self.base_free.shape
+        # one cell more than the radius each way: the cells left out are farther than it
+        i0 = max(int(np.floor((xmin - radius - r.x0) / r.cell)) - 1, 0)
+        i1 = min(int(np.ceil((xmax + radius - r.x0) / r.cell)) + 1, nx)
+        j0 = max(int(np.floor((ymin - radius - r.y0) / r.cell)) - 1, 0)
+        j1 = min(int(np.ceil((ymax + radius - r.y0) / r.cell)) + 1, ny)
+        window = None
+        if i0 < i1 and j0 < j1:
             xs, ys = self.xs[i0:i1, j0:j1], self.ys[i0:i1, j0:j1]
             dx = np.maximum(np.maximum(xmin - xs, xs - xmax), 0.0)
             dy = np.maximum(np.maximum(ymin - ys, ys - ymax), 0.0)
-            free[i0:i1, j0:j1] &= dx * dx + dy * dy >= radius * radius
-        return free
+            window = (i0, i1, j0, j1, dx * dx + dy * dy >= radius * radius)
+        self._windows[key] = window
+        return window
 
 
 def _to_nav_cells(rect: Sequence[float]) -> tuple[float, float, float, float]:
@@ -175,6 +195,10 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                     trials += 1
                     if trials > budget:
                         break
+                    # the reach first: it is the cheapest test, and most poses open nothing
+                    new_share, _ = meter.pockets(prep.footprints(trial))
+                    if new_share <= share + 1e-6:
+                        continue
                     checks, _ = hard_checks(prep, trial)
                     if not checks.ok:
                         break
@@ -183,7 +207,6 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                         share, asked, lambda trial=trial: asked_weight(prep, trial)
                     ):
                         continue
-                    new_share, _ = meter.pockets(prep.footprints(trial))
                     # while the door is cut off, the largest share; among the moves that
                     # reconnect it, the one that keeps the most constraints
                     reconnected = new_share >= CUT_OFF_SHARE

@@ -317,18 +317,24 @@ def test_a_deep_wall_object_keeps_clear_beside_a_door_and_a_flat_one_need_not() 
         assert gap >= clear - 1e-6
 
 
+def _hang_in(
+    room: Room, floor: list, request: WallObjectRequest, windows: tuple = (), seed: int = 0
+) -> tuple[list, list]:
+    """Place one wall object in a room of its own (no doors)."""
+    walls = derive_walls([room])
+    rng = np.random.default_rng(seed)
+    return place_wall_objects(room, walls, [], list(windows), floor, [request], rng)
+
+
 def test_a_wall_cabinet_hangs_over_the_counter_run_not_over_the_floor() -> None:
     room = _rect("r", "kitchen", 0, 0, 4.0, 3.0)
-    walls = derive_walls([room])
     counters = [
         ("counter", box(0.05, 0.6, 0.65, 2.4), 0.9),
         ("table", box(1.8, 1.0, 2.6, 2.0), 0.75),
     ]
     cabinet = WallObjectRequest(id="cab", size=(0.8, 0.35, 0.7), kind="wall_cabinet")
     for seed in range(5):
-        placed, _ = place_wall_objects(
-            room, walls, [], [], counters, [cabinet], np.random.default_rng(seed)
-        )
+        placed, _ = _hang_in(room, counters, cabinet, seed=seed)
         assert len(placed) == 1
         p = placed[0]
         assert p.x < 0.4 and 0.6 + 0.4 - 1e-6 <= p.y <= 2.4 - 0.4 + 1e-6, p  # over the counter
@@ -336,7 +342,6 @@ def test_a_wall_cabinet_hangs_over_the_counter_run_not_over_the_floor() -> None:
 
 def test_an_optional_wall_cabinet_that_would_narrow_the_way_is_left_out() -> None:
     room = _rect("r", "kitchen", 0, 0, 4.0, 3.0)
-    walls = derive_walls([room])
     # furniture 0.5 m in front of every wall: no counter to hang over, no wall with room before it
     ring = [
         ("s", box(0.6, 0.6, 3.4, 0.9), 0.75),
@@ -346,15 +351,13 @@ def test_an_optional_wall_cabinet_that_would_narrow_the_way_is_left_out() -> Non
     ]
     size = (0.8, 0.35, 0.7)
     optional = WallObjectRequest(id="cab", size=size, kind="wall_cabinet", optional=True)
-    placed, unplaced = place_wall_objects(
-        room, walls, [], [], ring, [optional], np.random.default_rng(0)
-    )
+    placed, unplaced = _hang_in(room, ring, optional)
     assert placed == [] and "narrow the way" in unplaced[0].reason
     asked = WallObjectRequest(id="cab", size=size, kind="wall_cabinet")
-    placed, _ = place_wall_objects(room, walls, [], [], ring, [asked], np.random.default_rng(0))
+    placed, _ = _hang_in(room, ring, asked)
     assert len(placed) == 1  # asked for: it still hangs
     painting = WallObjectRequest(id="pic", size=(0.8, 0.03, 0.6), kind="painting", optional=True)
-    placed, _ = place_wall_objects(room, walls, [], [], ring, [painting], np.random.default_rng(0))
+    placed, _ = _hang_in(room, ring, painting)
     assert len(placed) == 1  # flat: it narrows nothing
 
 
@@ -364,7 +367,6 @@ def test_a_wall_cabinet_over_open_floor_does_not_cut_off_the_corner_beside_it() 
     the counter and cut off the corner behind it, so the cabinet, not asked for, is left out;
     one asked for still hangs."""
     room = _rect("r", "kitchen", 0, 0, 4.0, 3.2)
-    walls = derive_walls([room])
     floor = [
         ("counter", box(0.75, 2.55, 4.0, 3.15), 0.9),
         ("fridge", box(0.05, 0.05, 0.75, 0.75), 1.8),
@@ -376,9 +378,7 @@ def test_a_wall_cabinet_over_open_floor_does_not_cut_off_the_corner_beside_it() 
     size = (0.8, 0.35, 0.7)
     for optional in (True, False):
         request = WallObjectRequest(id="cab", size=size, kind="wall_cabinet", optional=optional)
-        placed, unplaced = place_wall_objects(
-            room, walls, [], [window], floor, [request], np.random.default_rng(0)
-        )
+        placed, unplaced = _hang_in(room, floor, request, windows=(window,))
         if optional:
             assert placed == [] and "cut off a corner" in unplaced[0].reason
         else:

@@ -303,7 +303,7 @@ def furnish_room(
     _lay_rugs(plan_room, room, context, assets.floor, result, library, out)
     hung_for = front_lookers(plan_room, grid)  # boards hang where the front row looks
     _hang(hung_for, room, context, windows, assets.wall, floor_items, library, seed, out)
-    _stand_unhung_tvs(plan_room, room, out)
+    _stand_unhung_tvs(plan_room, room, out, library)
     _hang_from_ceiling(plan_room, room, context, assets.ceiling, floor_items, library, out)
     return out
 
@@ -342,18 +342,31 @@ def _make_room_for_relations(
     return made.result
 
 
-def _stand_unhung_tvs(plan_room: PlanRoom, room: Room, out: RoomFurniture) -> None:
-    """A TV that could not hang over its stand (a window or door took that wall) stands on the
-    stand instead: it joins the stand's small objects, dropped and settled with them."""
+# a top a TV without its own stand stands on (a counter, a sideboard): its height, least area
+TV_HOST_HEIGHTS_M = (0.4, 1.2)
+TV_HOST_AREA_M2 = 0.25
+
+
+def _stand_unhung_tvs(
+    plan_room: PlanRoom, room: Room, out: RoomFurniture, library: AssetLibrary
+) -> None:
+    """A TV that could not hang (over its stand: a window or door took that wall; without a
+    stand: no wall had room) stands on its stand instead, or on the roomiest top of the room's
+    furniture at a TV's height (a counter, a sideboard): it joins that receptacle's small
+    objects, dropped and settled with them."""
     above = {o.name: o.above for o in plan_room.objects if o.placement == "wall" and o.above}
-    by_name = {o.name: o for o in plan_room.objects}
     placed = {o.id for o in out.objects}
     kept = []
     for item in out.unplaced:
         name = str(item.get("object", "")).rsplit("-", 1)[0]
+        if item.get("stage") != "wall" or name != "television":
+            kept.append(item)
+            continue
         stand = above.get(name)
         oid = object_id(room.id, instance_name(stand, 0)) if stand is not None else ""
-        if item.get("stage") != "wall" or name != "television" or oid not in placed:
+        if oid not in placed:
+            oid = _tv_host(out, library)
+        if not oid:
             kept.append(item)
             continue
         tv = PlanSmallObject(
@@ -363,7 +376,11 @@ def _stand_unhung_tvs(plan_room: PlanRoom, room: Room, out: RoomFurniture) -> No
             variance="same",
         )
         index = next((i for i, (rid, _) in enumerate(out.receptacles) if rid == oid), None)
-        holder = by_name[stand] if index is None else out.receptacles[index][1]
+        if index is not None:
+            holder = out.receptacles[index][1]
+        else:
+            host = next(o for o in out.objects if o.id == oid)
+            holder = _plan_object_of(plan_room, room.id, host.id)
         others = [s for s in holder.on_top if s.category != "television"]
         entry = (oid, holder.model_copy(update={"on_top": [tv, *others]}))
         if index is None:
@@ -373,6 +390,27 @@ def _stand_unhung_tvs(plan_room: PlanRoom, room: Room, out: RoomFurniture) -> No
         reason = item.get("reason", "no wall for it")
         out.changes.append(f"{room.id}: {item['object']}: {reason}; it stands on {oid} instead")
     out.unplaced = kept
+
+
+def _tv_host(out: RoomFurniture, library: AssetLibrary) -> str:
+    """The placed floor object with the roomiest top at a TV's height, if any ("" if none)."""
+    best, best_area = "", TV_HOST_AREA_M2
+    low, high = TV_HOST_HEIGHTS_M
+    for obj in out.objects:
+        meta = library.get(obj.asset).meta
+        area = max((s.area_m2 for s in meta.surfaces if low <= s.height <= high), default=0.0)
+        if area > best_area:
+            best, best_area = obj.id, area
+    return best
+
+
+def _plan_object_of(plan_room: PlanRoom, room_id: str, oid: str) -> PlanObject:
+    """The plan object a placed scene object is an instance of."""
+    for obj in plan_room.objects:
+        for instance in obj.instances():
+            if object_id(room_id, instance) == oid:
+                return obj
+    raise KeyError(oid)
 
 
 def _hang_from_ceiling(

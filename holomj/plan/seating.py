@@ -10,8 +10,10 @@ a link the room's usual kind is kept (:func:`holomj.plan.object_requests.apply_r
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from types import MappingProxyType
 
+from holomj.layout.constraints import parse_constraint_text
 from holomj.plan.knowledge import KnowledgeBase
 from holomj.plan.prompt import ObjectRequest
 from holomj.plan.prompt_relations import RelationRequest
@@ -21,9 +23,21 @@ from holomj.plan.prompt_relations import RelationRequest
 SEAT_RELATIONS = frozenset({"around", "adjacent_to", "near", "in_front_of", "facing"})
 
 
-def seat_pairs(kb: KnowledgeBase) -> dict[str, tuple[str, ...]]:
+# seat pairs per knowledge base (kept with it, so that its id is not reused while cached)
+_PAIRS: dict[int, tuple[KnowledgeBase, Mapping[str, tuple[str, ...]]]] = {}
+
+
+def seat_pairs(kb: KnowledgeBase) -> Mapping[str, tuple[str, ...]]:
     """Table kind -> the seat kinds the templates put per instance of it, or gather near it
-    (``seat`` without ``per``, "office chair | near, conference table"), in template order."""
+    (``seat`` without ``per``, "office chair | near, conference table"), in template order.
+    Worked out once per knowledge base: the planner asks for every seat word."""
+    cached = _PAIRS.get(id(kb))
+    if cached is None or cached[0] is not kb:
+        cached = _PAIRS[id(kb)] = (kb, MappingProxyType(_seat_pairs(kb)))
+    return cached[1]
+
+
+def _seat_pairs(kb: KnowledgeBase) -> dict[str, tuple[str, ...]]:
     pairs: dict[str, list[str]] = {}
     gathered: list[tuple[str, str]] = []
     tables = set(kb.generics["table"].kinds) if "table" in kb.generics else set()
@@ -58,16 +72,11 @@ def _sat_at(kb: KnowledgeBase, table: str) -> bool:
 
 
 def _gathered_at(seat: str, lines: Sequence[str]) -> str | None:
-    """The object a template's constraint line puts ``seat`` near, if any."""
-    for line in lines:
-        parts = [p.strip() for p in line.split("|")]
-        if parts[0] != seat:
-            continue
-        for part in parts[1:]:
-            words = [w.strip() for w in part.split(",")]
-            if len(words) == 2 and words[0] == "near":
-                return words[1]
-    return None
+    """The object a template's constraint lines put ``seat`` near, if any."""
+    parsed = parse_constraint_text("\n".join(lines))
+    return next(
+        (c.target for c in parsed.constraints if c.object == seat and c.kind == "near"), None
+    )
 
 
 def seat_kinds(kb: KnowledgeBase) -> frozenset[str]:

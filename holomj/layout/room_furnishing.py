@@ -379,8 +379,7 @@ def _stand_unhung_tvs(
         if index is not None:
             holder = out.receptacles[index][1]
         else:
-            host = next(o for o in out.objects if o.id == oid)
-            holder = _plan_object_of(plan_room, room.id, host.id)
+            holder = _plan_object_of(plan_room, room.id, oid)
         others = [s for s in holder.on_top if s.category != "television"]
         entry = (oid, holder.model_copy(update={"on_top": [tv, *others]}))
         if index is None:

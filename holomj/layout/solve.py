@@ -24,7 +24,7 @@ from shapely.geometry import box
 
 from holomj.errors import InputError
 from holomj.layout import geometry as geo
-from holomj.layout.open_pockets import ReachMeter, open_pockets
+from holomj.layout.open_pockets import open_pockets, reachable_share
 from holomj.layout.room_problem import PreparedRoom, RoomProblem
 from holomj.layout.solver_cpsat import corridor_obstacles, solve_cpsat
 from holomj.layout.solver_greedy import insert_unplaced, satisfied_weight, solve_greedy
@@ -427,5 +427,5 @@ def _report(
         solver_status=status,
         hard_checks=checks,
         warnings=warnings,
-        reachable_share=round(ReachMeter(prep).pockets(prep.footprints(poses))[0], 4),
+        reachable_share=round(reachable_share(prep, poses), 4),
     )

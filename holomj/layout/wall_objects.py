@@ -176,9 +176,15 @@ def _blocks(
     for item in floor:
         if item.id == skip or not item.footprint.intersects(near):
             continue
-        ts = [face.wall.locate(p)[0] for p in item.footprint.exterior.coords]
-        out.append((min(ts), max(ts), 0.0, item.height, f"floor object {item.id}"))
+        t0, t1 = _span_along(face, item)
+        out.append((t0, t1, 0.0, item.height, f"floor object {item.id}"))
     return out
+
+
+def _span_along(face: WallFace, item: FloorItem) -> tuple[float, float]:
+    """The stretch of the face's wall (t0, t1) that floor object ``item`` stands along."""
+    ts = [face.wall.locate(p)[0] for p in item.footprint.exterior.coords]
+    return min(ts), max(ts)
 
 
 def _clear(
@@ -443,7 +449,8 @@ def _place_free(
             cursor = max(cursor, b1)
     if not stretches:
         return f"no free stretch of wall {width:.2f} m wide at {z0:.2f}-{z1:.2f} m"
-    if depth > DEEP_M and z0 < HEAD_BAND_M:
+    low_and_deep = depth > DEEP_M and z0 < HEAD_BAND_M
+    if low_and_deep:
         # a wall cabinet hangs over furniture below it (a counter run), not over the floor
         # people and robots walk on, when it can
         for face, t in _over_furniture(stretches, floor, req.size, z0, placed):
@@ -452,7 +459,6 @@ def _place_free(
     order = sorted(
         range(len(stretches)), key=lambda i: -(stretches[i][1] - stretches[i][0] + float(jitter[i]))
     )
-    low_and_deep = depth > DEEP_M and z0 < HEAD_BAND_M
     fenced: tuple[WallFace, float] | None = None  # the first spot that narrows a way past
     for i in order:
         a, b, face = stretches[i]
@@ -505,10 +511,9 @@ def _over_furniture(
     for a, b, face in stretches:
         near = face_band(face, AGAINST_WALL_M)  # furniture against the wall: under the object
         spans = sorted(
-            (min(ts), max(ts))
+            _span_along(face, item)
             for item in floor
             if item.height <= z0 and item.footprint.intersects(near)
-            for ts in [[face.wall.locate(p)[0] for p in item.footprint.exterior.coords]]
         )
         merged: list[list[float]] = []
         for u0, u1 in spans:  # counter modules side by side make one run

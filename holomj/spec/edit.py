@@ -26,7 +26,7 @@ the :class:`EditReport`. Nothing in an operations file is ever executed.
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Literal, get_args
 
 from pydantic import BaseModel, Field, RootModel, model_validator
 
@@ -58,7 +58,7 @@ Yaw = Annotated[float, Field(ge=-3600.0, le=3600.0)]
 
 # Relations an edit may ask of a floor object: places (no target) and relations to another
 # object of the room (its id). ``above`` is for wall and ceiling objects.
-PLACE_RELATIONS = (
+EditPlaceKind = Literal[
     "corner",
     "wall",
     "middle",
@@ -67,26 +67,8 @@ PLACE_RELATIONS = (
     "by_door",
     "facing_window",
     "facing_door",
-)
-OBJECT_RELATIONS = (
-    "adjacent_to",
-    "near",
-    "in_front_of",
-    "behind",
-    "facing",
-    "across_from",
-    "around",
-    "above",
-)
-EditRelationKind = Literal[
-    "corner",
-    "wall",
-    "middle",
-    "under_window",
-    "by_window",
-    "by_door",
-    "facing_window",
-    "facing_door",
+]
+EditObjectRelationKind = Literal[
     "adjacent_to",
     "near",
     "in_front_of",
@@ -96,6 +78,9 @@ EditRelationKind = Literal[
     "around",
     "above",
 ]
+EditRelationKind = Literal[EditPlaceKind, EditObjectRelationKind]
+PLACE_RELATIONS: tuple[str, ...] = get_args(EditPlaceKind)
+OBJECT_RELATIONS: tuple[str, ...] = get_args(EditObjectRelationKind)
 
 
 class EditRelation(FrozenModel):

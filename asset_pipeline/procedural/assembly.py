@@ -104,38 +104,8 @@ def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBun
     the prism over its polygon); a violation is a bug in the design and raises ValueError.
     """
     parts = centred_parts(design.parts)
-    by_material: dict[str, tuple[Material, list[Mesh]]] = {}
-    for part in parts:
-        mesh = part.mesh()
-        if mesh is not None:
-            by_material.setdefault(part.material.name, (part.material, []))[1].append(mesh)
     files: dict[str, bytes] = {}
-    visual = []
-    visual_meshes: list[Mesh] = []
-    for name in sorted(by_material):
-        material, meshes = by_material[name]
-        pattern = pattern_of(material) if design.textured else None
-        if pattern is not None:
-            meshes = [textured_mesh(m, pattern) for m in meshes]
-        mesh = rounded(merge_meshes(meshes))
-        visual_meshes.append(mesh)
-        filename = f"{name}.obj"
-        files[filename] = obj_bytes(mesh, comment=f"{design.id}: {name} ({SOURCE}, {LICENSE})")
-        rgba = material.rgba
-        texture = None
-        if pattern is not None:  # the tint that, times the pattern, averages to the colour
-            texture = texture_file(pattern)
-            files[texture] = pattern_png(pattern)
-            rgba = tinted(rgba, pattern)  # type: ignore[assignment]
-        visual.append(
-            VisualPart(
-                mesh=filename,
-                rgba=rgba,
-                texture=texture,
-                specular=material.specular,
-                shininess=material.shininess,
-            )
-        )
+    visual, visual_meshes = material_visuals(design, parts, files)
     vertices = np.concatenate([m.vertices for m in visual_meshes])
     low, high = vertices.min(axis=0), vertices.max(axis=0)
     if expected_size is not None and np.any(np.abs(high - low - expected_size) > 1e-3):
@@ -181,6 +151,43 @@ def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBun
     if design.proxy:
         meta["proxy"] = True
     return AssetBundle(meta=validate_model(AssetMeta, meta, design.id), files=files)
+
+
+def material_visuals(
+    design: AssetDesign, parts: Sequence[Part], files: dict[str, bytes], prefix: str = ""
+) -> tuple[list[VisualPart], list[Mesh]]:
+    """One OBJ file per material of ``parts`` (added to ``files``, named ``<prefix>_<material>``
+    or ``<material>``, textured when the design is) and its visual record; also the meshes."""
+    by_material: dict[str, tuple[Material, list[Mesh]]] = {}
+    for part in parts:
+        mesh = part.mesh()
+        if mesh is not None:
+            by_material.setdefault(part.material.name, (part.material, []))[1].append(mesh)
+    visual, meshes = [], []
+    for name in sorted(by_material):
+        material, group = by_material[name]
+        pattern = pattern_of(material) if design.textured else None
+        if pattern is not None:
+            group = [textured_mesh(m, pattern) for m in group]
+        mesh = rounded(merge_meshes(group))
+        meshes.append(mesh)
+        filename = f"{prefix}_{name}.obj" if prefix else f"{name}.obj"
+        files[filename] = obj_bytes(mesh, comment=f"{design.id}: {name} ({SOURCE}, {LICENSE})")
+        rgba, texture = material.rgba, None
+        if pattern is not None:  # the tint that, times the pattern, averages to the colour
+            texture = texture_file(pattern)
+            files[texture] = pattern_png(pattern)
+            rgba = tinted(rgba, pattern)  # type: ignore[assignment]
+        visual.append(
+            VisualPart(
+                mesh=filename,
+                rgba=rgba,
+                texture=texture,
+                specular=material.specular,
+                shininess=material.shininess,
+            )
+        )
+    return visual, meshes
 
 
 def covering_colliders(

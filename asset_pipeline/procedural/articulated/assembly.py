@@ -47,16 +47,9 @@ from asset_pipeline.procedural.assembly import (
     _support_surface,
     centred_parts,
     covering_colliders,
+    material_visuals,
 )
-from asset_pipeline.procedural.obj_writer import merge_meshes, obj_bytes, rounded
-from asset_pipeline.procedural.parts import Collider, Material, Mesh, Part, Surface, Vec3
-from asset_pipeline.procedural.textures import (
-    pattern_of,
-    pattern_png,
-    texture_file,
-    textured_mesh,
-    tinted,
-)
+from asset_pipeline.procedural.parts import Collider, Mesh, Part, Surface, Vec3
 from holomj.spec.assets import AssetMeta, VisualPart
 from holomj.spec.base import validate_model
 
@@ -206,37 +199,9 @@ def _visuals(
     design: AssetDesign, key: str, parts: list[Part], files: dict[str, bytes]
 ) -> tuple[list[VisualPart], list[Mesh]]:
     """The OBJ files (added to ``files``) and visual records of one body's parts."""
-    by_material: dict[str, tuple[Material, list[Mesh]]] = {}
-    for part in parts:
-        mesh = part.mesh()
-        if mesh is not None:
-            by_material.setdefault(part.material.name, (part.material, []))[1].append(mesh)
-    if not by_material:
+    visual, meshes = material_visuals(design, parts, files, prefix=key)
+    if not visual:
         raise ValueError(f"{design.id}: body {key or 'carcass'!r} has no visual part")
-    visual, meshes = [], []
-    for name in sorted(by_material):
-        material, group = by_material[name]
-        pattern = pattern_of(material) if design.textured else None
-        if pattern is not None:
-            group = [textured_mesh(m, pattern) for m in group]
-        mesh = rounded(merge_meshes(group))
-        meshes.append(mesh)
-        filename = f"{key}_{name}.obj" if key else f"{name}.obj"
-        files[filename] = obj_bytes(mesh, comment=f"{design.id}: {name} ({SOURCE}, {LICENSE})")
-        rgba, texture = material.rgba, None
-        if pattern is not None:
-            texture = texture_file(pattern)
-            files[texture] = pattern_png(pattern)
-            rgba = tinted(rgba, pattern)  # type: ignore[assignment]
-        visual.append(
-            VisualPart(
-                mesh=filename,
-                rgba=rgba,
-                texture=texture,
-                specular=material.specular,
-                shininess=material.shininess,
-            )
-        )
     return visual, meshes
 
 

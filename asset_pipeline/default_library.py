@@ -10,12 +10,12 @@ from __future__ import annotations
 from pathlib import Path
 
 from asset_pipeline.library_writer import (
-    INDEX_FILE,
     add_assets,
     library_lock,
     remove_assets,
     write_library,
 )
+from holomj.file_names import LIBRARY_INDEX
 from holomj.library.location import default_library_root
 from holomj.library.store import AssetLibrary
 
@@ -68,7 +68,7 @@ def ensure_default_library(
     root = Path(root) if root is not None else default_library_root()
     with library_lock(root):
         marker = root / VERSION_FILE
-        if not (root / INDEX_FILE).is_file():
+        if not (root / LIBRARY_INDEX).is_file():
             write_library(root, DEFAULT_LIBRARY_NAME, bundles_of(), overwrite=True)
         elif force or not marker.is_file() or marker.read_text().strip() != version:
             bundles = bundles_of()

@@ -34,12 +34,10 @@ from typing import Any
 
 from holomj.atomic import replace_folder, write_file
 from holomj.errors import AssetNotFoundError, OutputExistsError, SpecError
+from holomj.file_names import LIBRARY_BLOBS, LIBRARY_INDEX, LIBRARY_META
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.base import read_json, validate_model
 
-INDEX_FILE = "library.json"
-META_FILE = "asset.json"
-BLOB_DIR = ".blobs"  # content-addressed images, hard-linked into the asset folders
 SHARED_SUFFIXES = (".png",)
 
 _SAFE_PART = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.\-]*$")
@@ -104,13 +102,13 @@ def write_library(
     index = validate_model(
         LibraryIndex,
         {"name": name, "assets": {b.meta.id: b.folder_name for b in bundles}},
-        f"{root / INDEX_FILE}",
+        f"{root / LIBRARY_INDEX}",
     )
 
     def fill(tmp: Path) -> None:
         for bundle in bundles:
-            _write_bundle(tmp, bundle, tmp / BLOB_DIR)
-        _write_file(tmp / INDEX_FILE, index_bytes(index))
+            _write_bundle(tmp, bundle, tmp / LIBRARY_BLOBS)
+        _write_file(tmp / LIBRARY_INDEX, index_bytes(index))
 
     replace_folder(root, fill)
     return root
@@ -143,13 +141,13 @@ def add_assets(root: Path | str, bundles: Sequence[AssetBundle]) -> Path:
         new_index = validate_model(
             LibraryIndex,
             {"name": index.name, "assets": {**kept, **{b.meta.id: b.folder_name for b in checked}}},
-            str(root / INDEX_FILE),
+            str(root / LIBRARY_INDEX),
         )
         try:
             for bundle in checked:
                 replace_folder(
                     root / bundle.folder_name,
-                    lambda tmp, b=bundle: _fill_bundle(tmp, b, root / BLOB_DIR),
+                    lambda tmp, b=bundle: _fill_bundle(tmp, b, root / LIBRARY_BLOBS),
                 )
             _commit_index(root, new_index)
         except BaseException:
@@ -174,7 +172,7 @@ def remove_assets(root: Path | str, asset_ids: Sequence[str]) -> list[str]:
             )
         kept = {i: f for i, f in index.assets.items() if i not in set(asset_ids)}
         new_index = validate_model(
-            LibraryIndex, {"name": index.name, "assets": kept}, str(root / INDEX_FILE)
+            LibraryIndex, {"name": index.name, "assets": kept}, str(root / LIBRARY_INDEX)
         )
         _commit_index(root, new_index)
         return sweep_unindexed(root, new_index)
@@ -184,7 +182,7 @@ def sweep_unindexed(root: Path, index: LibraryIndex) -> list[str]:
     """Delete asset folders and leftovers the index does not name (crash debris, removed assets).
 
     Hidden entries (``.cache``, ``.lock``) and files are kept, and so are the blobs some asset
-    folder still links (:data:`BLOB_DIR`); the others are deleted.
+    folder still links (:data:`LIBRARY_BLOBS`); the others are deleted.
     """
     named = set(index.assets.values())
     removed = []
@@ -197,7 +195,7 @@ def sweep_unindexed(root: Path, index: LibraryIndex) -> list[str]:
         ):
             shutil.rmtree(entry, ignore_errors=True)
             removed.append(entry.name)
-    store = root / BLOB_DIR
+    store = root / LIBRARY_BLOBS
     if store.is_dir():
         for blob in sorted(store.iterdir()):
             if blob.is_file() and blob.stat().st_nlink <= 1:
@@ -235,7 +233,7 @@ def library_lock(root: Path) -> Iterator[None]:
 
 
 def _read_index(root: Path) -> LibraryIndex:
-    index_path = root / INDEX_FILE
+    index_path = root / LIBRARY_INDEX
     if not index_path.is_file():
         raise SpecError(
             "not an asset library (no library.json)",
@@ -246,7 +244,7 @@ def _read_index(root: Path) -> LibraryIndex:
 
 
 def _commit_index(root: Path, index: LibraryIndex) -> None:
-    write_file(root / INDEX_FILE, index_bytes(index))
+    write_file(root / LIBRARY_INDEX, index_bytes(index))
 
 
 def _free_folder(base: str, taken: set[str]) -> str:
@@ -267,7 +265,7 @@ def _fill_bundle(folder: Path, bundle: AssetBundle, store: Path) -> None:
             _link_or_write(target, data, store)
         else:
             _write_file(target, data)
-    _write_file(folder / META_FILE, meta_bytes(bundle.meta))
+    _write_file(folder / LIBRARY_META, meta_bytes(bundle.meta))
 
 
 def _link_or_write(target: Path, data: bytes, store: Path) -> None:
@@ -308,8 +306,8 @@ def _checked_bundles(bundles: Iterable[AssetBundle], existing: dict[str, str]) -
                 where=where,
                 fix="use letters, digits, '_', '.' and '-' only",
             )
-        if folder == INDEX_FILE or folder in folders:
-            other = folders.get(folder, INDEX_FILE)
+        if folder == LIBRARY_INDEX or folder in folders:
+            other = folders.get(folder, LIBRARY_INDEX)
             raise SpecError(
                 f"folder {folder!r} is already used by {other!r}",
                 where=where,
@@ -317,9 +315,9 @@ def _checked_bundles(bundles: Iterable[AssetBundle], existing: dict[str, str]) -
             )
         folders[folder] = meta.id
         files = {_safe_relpath(rel, where): data for rel, data in bundle.files.items()}
-        if META_FILE in files:
+        if LIBRARY_META in files:
             raise SpecError(
-                f"{META_FILE} is written from the metadata", where=where, fix="leave it out"
+                f"{LIBRARY_META} is written from the metadata", where=where, fix="leave it out"
             )
         for rel in _named_files(meta):
             if _safe_relpath(rel, where) not in files:

@@ -37,6 +37,7 @@ from typing import Any
 from asset_pipeline.library_writer import AssetBundle, add_assets, dumps_json
 from holomj.atomic import replace_folder
 from holomj.errors import HolomjError, InputError
+from holomj.file_names import LIBRARY_INDEX, LIBRARY_META
 from holomj.spec.assets import AssetMeta
 from holomj.spec.base import read_json, validate_model
 
@@ -283,7 +284,7 @@ def existing_assets(root: Path) -> dict[str, ExistingAsset]:
     source file and hash their ``derivation.json`` records."""
     from holomj.library.store import AssetLibrary
 
-    if not (Path(root) / "library.json").is_file():
+    if not (Path(root) / LIBRARY_INDEX).is_file():
         return {}
     library = AssetLibrary.open(root)
     found = {}
@@ -416,7 +417,7 @@ def _jsonable(value: Any) -> Any:
 def load_cached(cache_root: Path, key: str, asset_id: str) -> tuple[AssetBundle, dict] | None:
     """The cached bundle for ``key``, re-labelled with ``asset_id``; None if absent or broken."""
     folder = cache_root / key
-    meta_path = folder / "asset.json"
+    meta_path = folder / LIBRARY_META
     if not meta_path.is_file():
         return None
     try:
@@ -424,7 +425,7 @@ def load_cached(cache_root: Path, key: str, asset_id: str) -> tuple[AssetBundle,
         files = {
             p.relative_to(folder).as_posix(): p.read_bytes()
             for p in sorted(folder.rglob("*"))
-            if p.is_file() and p.name != "asset.json"
+            if p.is_file() and p.name != LIBRARY_META
         }
         report = json.loads(files.get(DERIVATION_FILE, b"{}"))
     except (HolomjError, OSError, ValueError):
@@ -440,7 +441,7 @@ def store_cached(cache_root: Path, key: str, bundle: AssetBundle) -> None:
             target = folder / rel
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(data)
-        (folder / "asset.json").write_bytes(dumps_json(bundle.meta.model_dump(mode="json")))
+        (folder / LIBRARY_META).write_bytes(dumps_json(bundle.meta.model_dump(mode="json")))
 
     replace_folder(cache_root / key, fill)
 

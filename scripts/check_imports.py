@@ -27,6 +27,7 @@ TOP_LEVEL = ("holomj", "asset_pipeline")
 ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "holomj.errors": ("the HolomjError types", ()),
     "holomj.version": ("the version string", ()),
+    "holomj.file_names": ("the file and folder names of output folders and libraries", ()),
     "holomj.atomic": ("the one atomic file writer and the one folder writer", ()),
     "holomj.seeds": ("seed -> per-stage generators", ()),
     "holomj.data": ("knowledge and catalogue data files", ()),
@@ -187,7 +188,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
 }
 MAY_IMPORT_ASSET_PIPELINE = ("holomj.jobs",)
 # imported by anyone: they import nothing of ours
-FOUNDATION = ("holomj.errors", "holomj.version")
+FOUNDATION = ("holomj.errors", "holomj.version", "holomj.file_names")
 
 
 def modules() -> dict[str, Path]:

@@ -23,6 +23,7 @@ from shapely.ops import nearest_points
 from holomj.evaluation.geometry import oriented_rect
 from holomj.evaluation.objects import Opening, SceneObject, SceneRoom
 from holomj.evaluation.text import id_noun
+from holomj.file_names import ASSETS_DIR, LIBRARY_META
 
 GENERIC_CATEGORIES = {"", "box", "object", "proxy", "unknown"}
 DEFAULT_WALL_HEIGHT_M = 2.7
@@ -68,7 +69,7 @@ class Scene:
 
     def _read_assets(self) -> dict[str, tuple[dict[str, Any], Path]]:
         assets = {}
-        for path in sorted((self.folder / "assets").glob("*/asset.json")):
+        for path in sorted((self.folder / ASSETS_DIR).glob(f"*/{LIBRARY_META}")):
             meta = read_json(path)
             if meta and "id" in meta:
                 assets[meta["id"]] = (meta, path.parent)

@@ -31,6 +31,17 @@ from typing import Any
 
 from holomj.atomic import replace_folder, write_file
 from holomj.errors import ExportError, FormatError, InputError, OutputExistsError
+from holomj.file_names import (
+    ASSETS_DIR,
+    LIBRARY_INDEX,
+    LIBRARY_META,
+    NAVMAP_JSON,
+    NAVMAP_PNG,
+    OBJECTS_JSON,
+    ROBOT_JSON,
+    SCENE_JSON,
+    SCENE_XML,
+)
 from holomj.library.store import AssetLibrary
 from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene, compile_scene
@@ -41,23 +52,6 @@ from holomj.spec.robot import RobotRecord
 from holomj.spec.scene import SceneSpec
 from holomj.spec.scene_file import read_scene_file
 
-SCENE_XML = "scene.xml"
-SCENE_JSON = "scene.json"
-ASSETS_DIR = "assets"
-LIBRARY_INDEX = "library.json"
-LIBRARY_META = "asset.json"
-OBJECTS_JSON = "objects.json"
-NAVMAP_JSON = "navmap.json"
-NAVMAP_PNG = "navmap.png"
-ROBOT_JSON = "robot.json"
-IMPORT_REPORT = "import_report.json"
-PLAN_JSON = "plan.json"
-GENERATE_JSON = "generate.json"
-GENERATE_LOG = "generate.log"
-REPORT_JSON = "report.json"
-POPULATE_REPORT = "populate_report.json"
-RENDERS_DIR = "renders"
-REPORT_HTML = "report.html"
 # written afresh with every export of the scene: everything else in a folder is a report about it
 SCENE_FILES = frozenset(
     {SCENE_XML, SCENE_JSON, ASSETS_DIR, OBJECTS_JSON, NAVMAP_JSON, NAVMAP_PNG, ROBOT_JSON}

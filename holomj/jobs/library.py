@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from holomj.file_names import LIBRARY_INDEX
 from holomj.library.store import AssetLibrary
 
 
@@ -24,7 +25,7 @@ def resolve_library(path: Path | str | None, create: bool = False) -> Path:
 
         return Path(ensure_default_library())
     path = Path(path)
-    if create and not (path / "library.json").exists():
+    if create and not (path / LIBRARY_INDEX).exists():
         from asset_pipeline.library_writer import write_library
 
         write_library(path, path.name, [], overwrite=path.exists() and not any(path.iterdir()))

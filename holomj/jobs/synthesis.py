@@ -39,6 +39,7 @@ from pathlib import Path
 from typing import Any
 
 from holomj.errors import InputError
+from holomj.file_names import LIBRARY_INDEX, LIBRARY_META
 from holomj.library.location import holomj_home
 from holomj.library.store import AssetLibrary, LibraryAsset
 
@@ -342,7 +343,7 @@ def _indexed(root: Path, asset_id: str) -> str | None:
     from holomj.spec.assets import LibraryIndex
     from holomj.spec.base import read_json, validate_model
 
-    path = root / "library.json"
+    path = root / LIBRARY_INDEX
     index = validate_model(LibraryIndex, read_json(path), str(path))
     return index.assets.get(asset_id)
 
@@ -351,12 +352,12 @@ def _meta(folder: Path) -> Any:
     from holomj.spec.assets import AssetMeta
     from holomj.spec.base import read_json, validate_model
 
-    path = folder / "asset.json"
+    path = folder / LIBRARY_META
     return validate_model(AssetMeta, read_json(path), str(path))
 
 
 def _writable(root: Path) -> bool:
-    index = root / "library.json"
+    index = root / LIBRARY_INDEX
     return os.access(root, os.W_OK) and (not index.exists() or os.access(index, os.W_OK))
 
 
@@ -364,7 +365,7 @@ def _ensure_library(root: Path) -> None:
     from asset_pipeline.library_writer import library_lock, write_library
 
     with library_lock(root):
-        if not (root / "library.json").is_file():
+        if not (root / LIBRARY_INDEX).is_file():
             write_library(root, "holomj-synthesised", [], overwrite=root.exists())
 
 

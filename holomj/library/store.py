@@ -14,6 +14,7 @@ from importlib import resources
 from pathlib import Path
 
 from holomj.errors import AssetNotFoundError, SpecError, closest_names
+from holomj.file_names import LIBRARY_INDEX, LIBRARY_META
 from holomj.library.location import default_library_root
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.base import read_json, validate_model
@@ -49,7 +50,7 @@ class AssetLibrary:
     def open(cls, root: Path | str | None = None) -> AssetLibrary:
         """Open the library at ``root`` (default: :func:`default_library_root`)."""
         root = Path(root) if root is not None else default_library_root()
-        index_path = root / "library.json"
+        index_path = root / LIBRARY_INDEX
         if not index_path.is_file():
             raise SpecError(
                 "not an asset library (no library.json)",
@@ -145,7 +146,7 @@ def size_distance(a: tuple[float, float, float], b: tuple[float, float, float]) 
 
 
 def _load_asset(folder: Path, asset_id: str) -> LibraryAsset:
-    meta_path = folder / "asset.json"
+    meta_path = folder / LIBRARY_META
     meta = validate_model(AssetMeta, read_json(meta_path), str(meta_path))
     if meta.id != asset_id:
         raise SpecError(

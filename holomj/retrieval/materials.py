@@ -32,13 +32,13 @@ from pydantic import Field
 
 from holomj.atomic import replace_folder
 from holomj.errors import InputError, SpecError
+from holomj.file_names import MATERIALS_INDEX
 from holomj.library.location import holomj_home
 from holomj.retrieval.text import TextEncoder
 from holomj.spec.base import FrozenModel, Identifier, read_json, validate_model
 from holomj.spec.materials import BUILTIN_MATERIALS, Material
 
 SURFACES = ("floor", "wall", "ceiling")
-INDEX_FILE = "materials.json"
 MATERIALS_SCHEMA_VERSION = "1.0"
 MAX_TEXTURE_PX = 1024
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg")
@@ -124,7 +124,7 @@ class MaterialLibrary:
         for name, item in sorted(index.materials.items()):
             if name in BUILTIN_MATERIALS:
                 raise SpecError(
-                    f"material {name!r} shadows a built-in one", where=str(folder / INDEX_FILE)
+                    f"material {name!r} shadows a built-in one", where=str(folder / MATERIALS_INDEX)
                 )
             material = item.material
             if material.texture is not None:
@@ -132,7 +132,7 @@ class MaterialLibrary:
                 if not texture.is_file():
                     raise SpecError(
                         f"texture {material.texture!r} of material {name!r} is missing",
-                        where=str(folder / INDEX_FILE),
+                        where=str(folder / MATERIALS_INDEX),
                     )
                 material = material.model_copy(update={"texture": str(texture)})
             entries.append(
@@ -171,7 +171,7 @@ class MaterialLibrary:
 
 def read_index(folder: Path) -> MaterialIndex:
     """The index of a user materials folder (empty when it has none)."""
-    path = Path(folder) / INDEX_FILE
+    path = Path(folder) / MATERIALS_INDEX
     if not path.is_file():
         return MaterialIndex()
     return validate_model(MaterialIndex, read_json(path), str(path))
@@ -390,12 +390,12 @@ def import_textures(
     def fill(tmp: Path) -> None:
         if target.is_dir():
             for old in target.iterdir():
-                if old.is_file() and old.name != INDEX_FILE:
+                if old.is_file() and old.name != MATERIALS_INDEX:
                     shutil.copy2(old, tmp / old.name)
         for name, _, data in prepared:
             (tmp / f"{name}.png").write_bytes(data)
         text = json.dumps(new_index.model_dump(mode="json"), indent=2, sort_keys=True) + "\n"
-        (tmp / INDEX_FILE).write_text(text, encoding="utf-8")
+        (tmp / MATERIALS_INDEX).write_text(text, encoding="utf-8")
 
     try:
         replace_folder(target, fill)

@@ -199,7 +199,7 @@ def test_shared_images_are_written_once_and_linked(tmp_path: Path) -> None:
     a, b, c = (root / name / "tex.png" for name in "abc")
     assert a.read_bytes() == PNG_A and c.read_bytes() == PNG_B
     assert a.stat().st_ino == b.stat().st_ino != c.stat().st_ino
-    blobs = sorted((root / library_writer.BLOB_DIR).iterdir())
+    blobs = sorted((root / library_writer.LIBRARY_BLOBS).iterdir())
     assert len(blobs) == 2 and {p.stat().st_nlink for p in blobs} == {2, 3}
     # The linked files read like any other: the library opens and finds the texture.
     assert AssetLibrary.open(root).get("a").path("tex.png").read_bytes() == PNG_A
@@ -209,7 +209,7 @@ def test_added_assets_link_existing_blobs_and_unused_blobs_are_swept(tmp_path: P
     root = write_library(tmp_path / "lib", "t", [textured("a", PNG_A)])
     add_assets(root, [textured("b", PNG_A), textured("c", PNG_B)])
     assert (root / "a" / "tex.png").stat().st_ino == (root / "b" / "tex.png").stat().st_ino
-    store = root / library_writer.BLOB_DIR
+    store = root / library_writer.LIBRARY_BLOBS
     assert len(list(store.iterdir())) == 2
     remove_assets(root, ["c"])  # the only user of PNG_B: its blob goes
     assert [p.read_bytes() for p in store.iterdir()] == [PNG_A]

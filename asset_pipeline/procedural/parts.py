@@ -152,9 +152,11 @@ class Surface:
 
 
 class Part(Protocol):
-    """What an asset is made of."""
+    """What an asset is made of (parts are frozen dataclasses, so the material is read-only)."""
 
-    material: Material
+    @property
+    def material(self) -> Material:
+        """The part's material."""
 
     def mesh(self) -> Mesh | None:
         """The visual mesh, or None for a collider-only part."""

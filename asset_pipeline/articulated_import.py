@@ -50,10 +50,8 @@ becomes a rigid asset (with a warning).
 
 from __future__ import annotations
 
-import hashlib
 import math
 import re
-import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -65,12 +63,26 @@ from asset_pipeline import annotate, physical
 from asset_pipeline.decompose import decompose
 from asset_pipeline.handles import derive_grasp, lever_m
 from asset_pipeline.hulls import collision_records, postprocess
-from asset_pipeline.importer import physical_record, visual_records
+from asset_pipeline.import_records import (
+    ImportedAsset,
+    ImportOptions,
+    Sidecar,
+    StepTimer,
+    asked_mass,
+    check_id,
+    chosen_category,
+    derived_meta,
+    explicit_fields,
+    file_sizes,
+    physical_record,
+    source_digest,
+    visual_records,
+)
 from asset_pipeline.kinematics import JointInfo, Kinematics, joint_motion, transformed
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.load import Part
 from asset_pipeline.mjcf_import import check_mjcf, load_mjcf, mjcf_files, root_tag
-from asset_pipeline.normalise import _UP, normalise
+from asset_pipeline.normalise import _UP, Front, Normalisation, UpAxis, normalise
 from asset_pipeline.proximity import MeshProximity
 from asset_pipeline.repair import Repaired, repair
 from asset_pipeline.surfaces import _first_hits, support_surfaces
@@ -186,110 +198,58 @@ class _Built:
     quality: dict
 
 
-def import_articulated(path: Path | str, asset_id: str, options: Any) -> Any:
-    """Import the URDF or MJCF file ``path`` as asset ``asset_id`` with ``options`` (an
-    :class:`~asset_pipeline.importer.ImportOptions`); see the module docstring."""
-    from asset_pipeline.importer import ImportedAsset, _check_id
-
+def import_articulated(path: Path | str, asset_id: str, options: ImportOptions) -> ImportedAsset:
+    """Import the URDF or MJCF file ``path`` as asset ``asset_id`` with ``options``; see the
+    module docstring."""
     path = Path(path)
-    where = str(path)
-    _check_id(asset_id)
-    timings: dict[str, float] = {}
-    clock = time.perf_counter()
-
-    def lap(name: str) -> None:
-        nonlocal clock
-        now = time.perf_counter()
-        timings[name] = round(now - clock, 3)
-        clock = now
-
-    sidecar_path = options.sidecar if options.sidecar is not None else annotate.find_sidecar(path)
-    sidecar = annotate.read_sidecar(Path(sidecar_path)) if sidecar_path else {}
-    sidecar_where = str(sidecar_path) if sidecar_path else where
-    fmt = articulated_format(path) or "urdf"
-    kin = (
-        load_mjcf(path, options.max_faces) if fmt == "mjcf" else load_urdf(path, options.max_faces)
-    )
-    warnings = list(kin.warnings)
-    lap("load")
-    carcass, parts = _bodies(kin, where, warnings)
-    _close(parts, warnings)
-    up_axis = options.up_axis or kin.up_axis
-    front = options.front if options.front != "+x" else _front(parts, up_axis)
-    everything = [carcass, *parts]
-    counts = [len(b.parts) for b in everything]
-    flat, frame = normalise(
-        [p for b in everything for p in b.parts], where, up_axis, front, options.size
-    )
-    start = 0
-    for body, count in zip(everything, counts, strict=True):
-        body.parts, start = flat[start : start + count], start + count
-        if body.joint is not None:
-            body.joint = _moved_joint(body.joint, frame)
-    lap("normalise")
-
+    check_id(asset_id)
+    timer = StepTimer()
+    sidecar = Sidecar.of(path, options.sidecar)
     files: dict[str, bytes] = {}
-    textures: dict[str, str] = {}
-    built = [_build(body, options, files, textures, where) for body in everything]
-    lap("decompose")
-
-    guessed = physical.guess_category(path)
-    if options.category:
-        category, category_source = options.category, "option"
-    elif sidecar.get("category"):
-        category, category_source = str(sidecar["category"]), "sidecar"
-    elif kin.category:
-        category, category_source = _partnet_category(kin.category), "PartNet-Mobility meta.json"
-    elif guessed:
-        category, category_source = guessed, "file name"
-    else:
-        category, category_source = physical.DEFAULT_CATEGORY, "default"
+    done = _processed(path, options, timer, files)
+    kin, frame, built, warnings = done.kin, done.frame, done.built, done.warnings
+    named = kin.category
+    found = (_partnet_category(named), "PartNet-Mobility meta.json") if named else None
+    category, category_source = chosen_category(path, options.category, sidecar, found)
     info = physical.category_info(category, frame.size)
-    given = options.mass_kg
-    if given is None:
-        given = annotate.sidecar_number(sidecar, "mass_kg", sidecar_where)
-    density = annotate.sidecar_number(sidecar, "density_kg_m3", sidecar_where)
-    volumes = [sum(c.volume for c in b.colliders) for b in built]
-    whole = trimesh.util.concatenate([b.repaired.physics for b in built])
-    massed = physical.resolve_mass(info, whole, sum(volumes), given=given, density=density)
-    masses = _share_mass(massed.mass_kg, built, info, volumes)
-    lap("mass")
+    given, density = asked_mass(options.mass_kg, sidecar)
+    volume = sum(sum(c.volume for c in b.colliders) for b in built)
+    massed, masses = _masses(built, info, given, density)
+    timer.lap("mass")
 
     asset_top = float(frame.size[2])
-    part_records = []
-    for b, mass in zip(built[1:], masses[1:], strict=True):
-        part_records.append(_part_record(b, mass, kin, asset_top))
+    part_records = [
+        _part_record(b, mass, kin, asset_top) for b, mass in zip(built[1:], masses[1:], strict=True)
+    ]
     surfaces, interior = _surfaces(built, warnings)
     _warn_touching(built, warnings)
-    lap("surfaces")
+    timer.lap("surfaces")
 
-    derived = {
-        "id": asset_id,
-        "category": category,
-        "description": annotate.describe(category),
-        "size": list(frame.size),
-        "mass_kg": massed.mass_kg,
-        "density_kg_m3": density if density is not None else massed.mass_kg / sum(volumes),
-        "friction": info.friction,
-        "placement": list(info.placement),
-        "upright": info.upright,
-        "front": "+x",
-        "visual": built[0].body.record["visual"],
-        "collision": built[0].body.record["collision"],
-        "maxhullvert": max(4, *(q.quality["max_vertices_per_hull"] for q in built)),
-        "surfaces": surfaces,
-        "source": f"{path.name} ({fmt}, up {up_axis}, front {front} -> +x, "
+    derived = derived_meta(
+        asset_id=asset_id,
+        category=category,
+        description=annotate.describe(category),
+        size=frame.size,
+        mass_kg=massed.mass_kg,
+        density_kg_m3=density if density is not None else massed.mass_kg / volume,
+        info=info,
+        placement=info.placement,
+        geometry={
+            "visual": built[0].body.record["visual"],
+            "collision": built[0].body.record["collision"],
+            "maxhullvert": max(4, *(q.quality["max_vertices_per_hull"] for q in built)),
+            "surfaces": surfaces,
+        },
+        source=f"{path.name} ({done.fmt}, up {done.up_axis}, front {done.front} -> +x, "
         f"scale {frame.scale:.6g})",
-    }
+    )
     if part_records:
         derived["articulation"] = {"parts": part_records, "interior": interior}
     else:
         warnings.append("no moving joint: imported as a rigid asset")
-    explicit = {"category": options.category, "description": options.description}
-    if options.mass_kg is not None:
-        explicit["mass_kg"] = float(options.mass_kg)
-    meta, meta_warnings = annotate.build_meta(derived, sidecar, explicit, sidecar_where)
-    lap("annotate")
+    explicit = explicit_fields(options.category, options.description, options.mass_kg)
+    meta, meta_warnings = annotate.build_meta(derived, sidecar.data, explicit, sidecar.where)
+    timer.lap("annotate")
     warnings += massed.warnings + meta_warnings
     degraded = [
         f"{_label(b.body)}: {b.decomposition.degraded_reason}"
@@ -300,47 +260,95 @@ def import_articulated(path: Path | str, asset_id: str, options: Any) -> Any:
         warnings.append(f"degraded decomposition: {'; '.join(degraded)}")
     report = {
         "asset_id": asset_id,
-        "source": {
-            "file": str(path),
-            "sha256": hashlib.sha256(path.read_bytes()).hexdigest(),
-            "format": fmt,
-            "partnet_mobility": kin.partnet,
-            "links": len(kin.links),
-            "joints": len(kin.joints),
-            "vertices": kin.vertices,
-            "faces": kin.faces,
-            "sidecar": str(sidecar_path) if sidecar_path else None,
-        },
+        "source": _source_report(path, done, sidecar),
         "normalisation": frame.as_report() | {"requested_size_m": options.size},
         "degraded": bool(degraded),
         "degraded_reason": "; ".join(degraded) or None,
-        "bodies": [
-            {
-                "body": _label(b.body),
-                "links": b.body.links,
-                "repairs": b.repaired.stats,
-                "watertight": b.repaired.watertight,
-                "decomposition": {
-                    "method": b.decomposition.method,
-                    "preprocess_mode": b.decomposition.preprocess_mode,
-                    "attempts": b.decomposition.attempts,
-                },
-                "quality": b.quality,
-                "mass_kg": mass,
-                **({"joint": b.body.record["joint_report"]} if b.body.joint else {}),
-            }
-            for b, mass in zip(built, masses, strict=True)
-        ],
+        "bodies": [_body_report(b, mass) for b, mass in zip(built, masses, strict=True)],
         "surfaces": [{"height": s["height"], "area_m2": s["area_m2"]} for s in surfaces],
         "interior_surfaces": [
             {"part": s["part"], "height": s["height"], "behind": s["behind"]} for s in interior
         ],
         "physical": physical_record(meta, info, massed, category_source),
-        "files": {name: len(data) for name, data in sorted(files.items())},
-        "timings_s": timings,
+        "files": file_sizes(files),
+        "timings_s": timer.timings,
         "warnings": warnings,
     }
     return ImportedAsset(bundle=AssetBundle(meta=meta, files=files), report=report)
+
+
+@dataclass
+class _Processed:
+    """An articulated file after the geometry steps: its format and kinematic tree, the frame
+    it was normalised into, every body built (the carcass first) and the warnings so far."""
+
+    fmt: str
+    kin: Kinematics
+    up_axis: UpAxis
+    front: Front
+    frame: Normalisation
+    built: list[_Built]
+    warnings: list[str]
+
+
+def _processed(
+    path: Path, options: ImportOptions, timer: StepTimer, files: dict[str, bytes]
+) -> _Processed:
+    """Load the file, split it into bodies at the closed pose, normalise them together and
+    build each (repair, decomposition, visual and collision files into ``files``), timed."""
+    where = str(path)
+    fmt = articulated_format(path) or "urdf"
+    kin = (
+        load_mjcf(path, options.max_faces) if fmt == "mjcf" else load_urdf(path, options.max_faces)
+    )
+    warnings = list(kin.warnings)
+    timer.lap("load")
+    carcass, parts = _bodies(kin, where, warnings)
+    _close(parts, warnings)
+    up_axis = options.up_axis or kin.up_axis
+    front = options.front if options.front != "+x" else _front(parts, up_axis)
+    everything = [carcass, *parts]
+    frame = _normalised(everything, where, up_axis, front, options.size)
+    timer.lap("normalise")
+    textures: dict[str, str] = {}
+    built = [_build(body, options, files, textures, where) for body in everything]
+    timer.lap("decompose")
+    return _Processed(fmt, kin, up_axis, front, frame, built, warnings)
+
+
+def _source_report(path: Path, done: _Processed, sidecar: Sidecar) -> dict[str, Any]:
+    """The report's section on the file read."""
+    kin = done.kin
+    return {
+        "file": str(path),
+        "sha256": source_digest(path),
+        "format": done.fmt,
+        "partnet_mobility": kin.partnet,
+        "links": len(kin.links),
+        "joints": len(kin.joints),
+        "vertices": kin.vertices,
+        "faces": kin.faces,
+        "sidecar": str(sidecar.path) if sidecar.path else None,
+    }
+
+
+def _body_report(built: _Built, mass: float) -> dict[str, Any]:
+    """The report's line of one body: its links, repairs, decomposition, quality, mass and
+    (for a part) its joint."""
+    return {
+        "body": _label(built.body),
+        "links": built.body.links,
+        "repairs": built.repaired.stats,
+        "watertight": built.repaired.watertight,
+        "decomposition": {
+            "method": built.decomposition.method,
+            "preprocess_mode": built.decomposition.preprocess_mode,
+            "attempts": built.decomposition.attempts,
+        },
+        "quality": built.quality,
+        "mass_kg": mass,
+        **({"joint": built.body.record["joint_report"]} if built.body.joint else {}),
+    }
 
 
 # --- 1. bodies --------------------------------------------------------------------------------
@@ -488,7 +496,26 @@ def _close(parts: list[_Body], warnings: list[str]) -> None:
 
 
 # --- 3. frame ---------------------------------------------------------------------------------
-def _front(parts: list[_Body], up_axis: str) -> str:
+def _normalised(
+    bodies: list[_Body],
+    where: str,
+    up_axis: UpAxis,
+    front: Front,
+    size: tuple[float, float, float] | None,
+) -> Normalisation:
+    """Normalise all bodies' geometry together (one frame for the whole asset) and move the
+    parts' joints into it."""
+    counts = [len(b.parts) for b in bodies]
+    flat, frame = normalise([p for b in bodies for p in b.parts], where, up_axis, front, size)
+    start = 0
+    for body, count in zip(bodies, counts, strict=True):
+        body.parts, start = flat[start : start + count], start + count
+        if body.joint is not None:
+            body.joint = _moved_joint(body.joint, frame)
+    return frame
+
+
+def _front(parts: list[_Body], up_axis: UpAxis) -> Front:
     """The source axis (after the up conversion) the parts open towards; +x when none does."""
     up = _UP[up_axis]
     total = np.zeros(2)
@@ -511,7 +538,7 @@ def _front(parts: list[_Body], up_axis: str) -> str:
     return "+y" if total[1] > 0 else "-y"
 
 
-def _moved_joint(joint: JointInfo, frame: Any) -> JointInfo:
+def _moved_joint(joint: JointInfo, frame: Normalisation) -> JointInfo:
     """``joint`` in the asset frame (``frame``: the Normalisation applied to the meshes)."""
     rot, scale = frame.rotation, frame.scale
     low, high = joint.range  # type: ignore[misc]
@@ -548,6 +575,16 @@ def _label(body: _Body) -> str:
 
 
 # --- 5. mass ----------------------------------------------------------------------------------
+def _masses(
+    built: list[_Built], info: physical.CategoryInfo, given: float | None, density: float | None
+) -> tuple[physical.MassResult, list[float]]:
+    """The whole asset's mass (as for a mesh import, over all bodies) and each body's share."""
+    volumes = [sum(c.volume for c in b.colliders) for b in built]
+    whole = trimesh.util.concatenate([b.repaired.physics for b in built])
+    massed = physical.resolve_mass(info, whole, sum(volumes), given=given, density=density)
+    return massed, _share_mass(massed.mass_kg, built, info, volumes)
+
+
 def _share_mass(total: float, built: list[_Built], info: Any, volumes: list[float]) -> list[float]:
     """The carcass's and every part's mass: ``total`` shared by material volume."""
     shares = [physical.material_volume(b.repaired.physics, info.wall_m).volume_m3 for b in built]

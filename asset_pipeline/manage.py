@@ -397,11 +397,16 @@ def cache_key(path: Path, options: Any) -> str:
     """Content address of one import: pipeline code + options + source bytes."""
     digest = hashlib.sha256()
     digest.update(pipeline_version().encode())
-    digest.update(json.dumps(_jsonable(options), sort_keys=True).encode())
+    digest.update(options_json(options).encode())
     for source in source_files(path):
         digest.update(source.name.encode())
         digest.update(hashlib.sha256(source.read_bytes()).digest())
     return digest.hexdigest()[:32]
+
+
+def options_json(options: Any) -> str:
+    """Import options (dataclasses, nested) as sorted JSON, for cache keys."""
+    return json.dumps(_jsonable(options), sort_keys=True)
 
 
 def _jsonable(value: Any) -> Any:

@@ -23,6 +23,9 @@ from holomj.errors import FormatError, InputError
 MIN_SIZE_M = 0.001
 MAX_SIZE_M = 50.0
 
+UpAxis = Literal["y", "z"]
+Front = Literal["+x", "-x", "+y", "-y"]  # the source axis (after up-conversion) that is the front
+
 _UP = {
     "z": np.eye(3),
     "y": np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]),
@@ -61,8 +64,8 @@ class Normalisation:
 def normalise(
     parts: list[Part],
     where: str,
-    up_axis: Literal["y", "z"],
-    front: Literal["+x", "-x", "+y", "-y"],
+    up_axis: UpAxis,
+    front: Front,
     size: tuple[float, float, float] | None,
 ) -> tuple[list[Part], Normalisation]:
     """Transform ``parts`` into the asset frame; reject absurd sizes with FormatError."""

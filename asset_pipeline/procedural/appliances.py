@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import numpy as np
-
 from asset_pipeline.procedural.kit import (
     ALUMINIUM,
     BARK,
@@ -35,6 +33,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_SHADE,
     WHITEBOARD,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
@@ -46,7 +45,6 @@ from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe, Sphere
 
-Rng = np.random.Generator
 MIRROR = Material("mirror_glass", (0.78, 0.84, 0.86, 1.0), 1.0, 1.0, "mirror")
 BLACK_APPLIANCE = Material("black_appliance", (0.10, 0.10, 0.11, 1.0), 0.7, 0.7, "black")
 OVEN_GLASS = Material("oven_glass", (0.05, 0.05, 0.06, 1.0), 0.9, 0.9, "dark glass")

@@ -9,6 +9,7 @@ from asset_pipeline.library_writer import AssetBundle
 # Importing the generator modules registers their categories.
 from asset_pipeline.procedural import (
     appliances,
+    bath_fixtures,
     furniture,
     home_cabinets,
     home_ceiling,
@@ -23,6 +24,7 @@ from asset_pipeline.procedural import (
     leisure_music_art,
     leisure_wall_decor,
     objects,
+    shelving,
     small_appliances,
     small_bath_wardrobe,
     small_decor,
@@ -58,6 +60,8 @@ _MODULES = (
     home_wall,
     home_ceiling,
     storage,
+    shelving,
+    bath_fixtures,
     appliances,
     leisure_gym,
     leisure_games,

@@ -6,8 +6,6 @@ Every generator takes the bounding box ``(d, w, h)`` and a style generator and f
 
 from __future__ import annotations
 
-import numpy as np
-
 from asset_pipeline.procedural.kit import (
     BLACK_LEATHER,
     BLACK_METAL,
@@ -19,6 +17,7 @@ from asset_pipeline.procedural.kit import (
     LEATHER,
     LINEN,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
@@ -33,7 +32,6 @@ from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.roles import fronts, tagged
 from asset_pipeline.procedural.round_parts import Cylinder
 
-Rng = np.random.Generator
 WHITE_CHAIR = Material("white_chair", (0.93, 0.92, 0.90, 1.0), 0.3, 0.4, "white painted")
 
 

@@ -12,8 +12,6 @@ from asset_pipeline.procedural.home_kit import (
     HANDLES,
     MARBLE,
     PROUD,
-    Rng,
-    count_word,
 )
 from asset_pipeline.procedural.kit import (
     BLACK_LEATHER,
@@ -25,9 +23,11 @@ from asset_pipeline.procedural.kit import (
     LEATHER,
     NAVY_LACQUER,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
+    count_word,
     drawer_fronts,
     pick,
     square_legs,

@@ -16,8 +16,6 @@ from asset_pipeline.procedural.home_kit import (
     RICE_PAPER,
     ROUND,
     WICKER,
-    Rng,
-    count_word,
     upright_rod,
 )
 from asset_pipeline.procedural.kit import (
@@ -44,9 +42,11 @@ from asset_pipeline.procedural.kit import (
     WHITE_LACQUER,
     WHITE_PLASTIC,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
+    count_word,
     pick,
     uniform,
 )

@@ -17,7 +17,6 @@ from asset_pipeline.procedural.home_kit import (
     ROUND,
     SAGE_TOY,
     SOOT,
-    Rng,
 )
 from asset_pipeline.procedural.kit import (
     BARK,
@@ -40,6 +39,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_LACQUER,
     WHITE_SHADE,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,

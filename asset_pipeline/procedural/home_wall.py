@@ -14,8 +14,6 @@ from asset_pipeline.procedural.home_kit import (
     IVORY_FACE,
     OPAL_GLASS,
     SAGE_TOY,
-    Rng,
-    count_word,
 )
 from asset_pipeline.procedural.kit import (
     ALUMINIUM,
@@ -48,9 +46,11 @@ from asset_pipeline.procedural.kit import (
     WHITE_PLASTIC,
     WHITE_SHADE,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
+    count_word,
     pick,
     uniform,
 )

@@ -20,7 +20,6 @@ from asset_pipeline.procedural.kit import (
 from asset_pipeline.procedural.parts import Collider, Material, Mesh, Part, Surface, Vec3, add3
 from asset_pipeline.procedural.round_parts import Cylinder
 
-Rng = np.random.Generator
 RUBBER = Material("rubber", (0.05, 0.05, 0.05, 1.0), 0.1, 0.1, "black rubber")
 RED_PAINT = Material("red_paint", (0.72, 0.10, 0.10, 1.0), 0.5, 0.5, "red")
 YELLOW_PAINT = Material("yellow_paint", (0.92, 0.74, 0.12, 1.0), 0.5, 0.5, "yellow")

@@ -5,8 +5,6 @@ Round objects (``yx_ratio=(1, 1)``) take x = y = diameter.
 
 from __future__ import annotations
 
-import numpy as np
-
 from asset_pipeline.procedural.kit import (
     ALUMINIUM,
     AMBER_GLASS,
@@ -41,6 +39,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_SHADE,
     WICK,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
@@ -52,7 +51,6 @@ from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe, Sphere
 
-Rng = np.random.Generator
 OBJECT = ("object",)
 ROUND = (1.0, 1.0)
 

@@ -15,6 +15,7 @@ from asset_pipeline.procedural.kit import (
     OAK,
     PAPER,
     STEEL,
+    Rng,
     block,
     chance,
     clamp,
@@ -34,7 +35,6 @@ from asset_pipeline.procedural.work_kit import (
     LAB_WHITE,
     OFFICE_GREY,
     PUTTY,
-    Rng,
 )
 
 MINT = Material("mint_vinyl", (0.55, 0.78, 0.72, 1.0), 0.4, 0.5, "mint green vinyl")

@@ -20,6 +20,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_LACQUER,
     WHITE_PLASTIC,
     WHITEBOARD,
+    Rng,
     block,
     chance,
     clamp,
@@ -37,7 +38,6 @@ from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     METAL_HANDLES,
     NUMBER_WORDS,
-    Rng,
 )
 
 

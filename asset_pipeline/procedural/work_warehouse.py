@@ -10,6 +10,7 @@ from asset_pipeline.procedural.kit import (
     PINE,
     SPACE_GREY,
     STEEL,
+    Rng,
     block,
     chance,
     clamp,
@@ -24,7 +25,6 @@ from asset_pipeline.procedural.parts import Material, Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     NUMBER_WORDS,
-    Rng,
 )
 
 ORANGE_STEEL = Material("orange_steel", (0.92, 0.42, 0.08, 1.0), 0.5, 0.5, "orange")

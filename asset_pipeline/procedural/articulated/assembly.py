@@ -50,7 +50,7 @@ from asset_pipeline.procedural.assembly import (
     material_visuals,
 )
 from asset_pipeline.procedural.parts import Collider, Mesh, Part, Surface, Vec3
-from holomj.spec.assets import AssetMeta, VisualPart
+from holomj.spec.assets import AssetMeta, CollisionPart, SupportSurface, VisualPart
 from holomj.spec.base import validate_model
 
 CLOSED_GAP = 0.0015  # metres between colliders of different bodies at the closed pose
@@ -91,50 +91,21 @@ def assemble_articulated(design: AssetDesign, expected_size: Vec3 | None = None)
     colliders: dict[str, list[Collider]] = {}
     gap = 0.0
     for key, group in groups.items():
-        colliders[key], found = covering_colliders(group.parts)
-        gap = max(gap, found.distance_m)
+        colliders[key], covered = covering_colliders(group.parts)
+        gap = max(gap, covered.distance_m)
         _check_inside(design.id, colliders[key], low, high)
     _check_clearance(design.id, [p for p in parts if unwrapped(p)[2] is None])
     _check_closed_gaps(design.id, groups, colliders)
-    collision: dict[str, list] = {}
-    hull_sizes: list[int] = []
-    for key, found in colliders.items():
-        collision[key] = []
-        prefix = f"{key}_" if key else ""
-        for k, collider in enumerate(found):
-            part, hull = _collision_part(collider, f"{prefix}hull_{k:02d}.obj")
-            if hull is not None:
-                files[part.mesh] = hull[0]  # type: ignore[index]
-                hull_sizes.append(len(hull[1]))
-            collision[key].append(part)
+    collision, hull_sizes = _collision(colliders, files)
+    masses, carcass_mass = _masses(design, groups, collision)
     carcass_volume = sum(c.volume_m3 for c in collision[CARCASS])
-    masses = {
-        key: group.link.density * sum(c.volume_m3 for c in collision[key])
-        for key, group in groups.items()
-        if group.link is not None
-    }
-    moving = sum(masses.values())
-    if moving > MAX_PART_SHARE * design.mass_kg:  # keep the carcass the heavier part
-        masses = {k: m * MAX_PART_SHARE * design.mass_kg / moving for k, m in masses.items()}
-    carcass_mass = design.mass_kg - sum(masses.values())
     for key, group in groups.items():
         if group.link is not None and group.link.joint.balance:  # fit its counterbalance
             link = group.link
             group.link = replace(
                 link, joint=balanced(link.joint, masses[key], _centre(collision[key]))
             )
-    outer = [
-        s
-        for p in parts
-        if unwrapped(p)[1] is None and unwrapped(p)[2] is None
-        for s in p.surfaces()
-    ]
-    stray = [
-        p for p in parts if unwrapped(p)[1] is not None and unwrapped(p)[2] is None and p.surfaces()
-    ]
-    if stray:
-        raise ValueError(f"{design.id}: a moving part has an outer surface; wrap it in Inside")
-    surfaces = sorted((_support_surface(s) for s in outer), key=lambda s: (s.height, s.polygon))
+    surfaces = _outer_surfaces(design.id, parts)
     articulation = {
         "parts": [
             _part_record(group.link, visuals[key], collision[key], masses[key])
@@ -166,6 +137,58 @@ def assemble_articulated(design: AssetDesign, expected_size: Vec3 | None = None)
     if design.attributes:
         meta["attributes"] = dict(design.attributes)
     return AssetBundle(meta=validate_model(AssetMeta, meta, design.id), files=files)
+
+
+def _collision(
+    colliders: dict[str, list[Collider]], files: dict[str, bytes]
+) -> tuple[dict[str, list[CollisionPart]], list[int]]:
+    """The collision records of every body (hull OBJ files go into ``files``) and the vertex
+    counts of the hulls."""
+    collision: dict[str, list[CollisionPart]] = {}
+    hull_sizes: list[int] = []
+    for key, found in colliders.items():
+        collision[key] = []
+        prefix = f"{key}_" if key else ""
+        for k, collider in enumerate(found):
+            part, hull = _collision_part(collider, f"{prefix}hull_{k:02d}.obj")
+            if hull is not None:
+                files[part.mesh] = hull[0]
+                hull_sizes.append(len(hull[1]))
+            collision[key].append(part)
+    return collision, hull_sizes
+
+
+def _masses(
+    design: AssetDesign, groups: dict[str, _Group], collision: dict[str, list[CollisionPart]]
+) -> tuple[dict[str, float], float]:
+    """The mass of every moving body (its link's density times its collision volume, scaled
+    down so that they weigh at most :data:`MAX_PART_SHARE` of the asset) and the carcass's."""
+    masses = {
+        key: group.link.density * sum(c.volume_m3 for c in collision[key])
+        for key, group in groups.items()
+        if group.link is not None
+    }
+    moving = sum(masses.values())
+    if moving > MAX_PART_SHARE * design.mass_kg:  # keep the carcass the heavier part
+        masses = {k: m * MAX_PART_SHARE * design.mass_kg / moving for k, m in masses.items()}
+    return masses, design.mass_kg - sum(masses.values())
+
+
+def _outer_surfaces(asset_id: str, parts: list[Part]) -> list[SupportSurface]:
+    """The outer support surfaces: those of carcass parts not inside it (a moving part with
+    one is an error: wrap it in Inside)."""
+    outer = [
+        s
+        for p in parts
+        if unwrapped(p)[1] is None and unwrapped(p)[2] is None
+        for s in p.surfaces()
+    ]
+    stray = [
+        p for p in parts if unwrapped(p)[1] is not None and unwrapped(p)[2] is None and p.surfaces()
+    ]
+    if stray:
+        raise ValueError(f"{asset_id}: a moving part has an outer surface; wrap it in Inside")
+    return sorted((_support_surface(s) for s in outer), key=lambda s: (s.height, s.polygon))
 
 
 def _centre(collision: list) -> Vec3:

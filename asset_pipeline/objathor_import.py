@@ -42,6 +42,7 @@ import numpy as np
 from asset_pipeline import annotate, physical
 from asset_pipeline.decompose import CoacdParams
 from asset_pipeline.hulls import postprocess
+from asset_pipeline.import_cache import CACHE_DIR, options_json, pipeline_version
 from asset_pipeline.import_records import (
     ID_FIX,
     ImportedAsset,
@@ -54,16 +55,7 @@ from asset_pipeline.import_records import (
     surface_summary,
 )
 from asset_pipeline.library_writer import AssetBundle
-from asset_pipeline.manage import (
-    CACHE_DIR,
-    ImportSummary,
-    JobOutcome,
-    finish_bundle,
-    import_cached,
-    options_json,
-    pipeline_version,
-    run_jobs,
-)
+from asset_pipeline.manage import ImportSummary, JobOutcome, finish_bundle, import_cached, run_jobs
 from asset_pipeline.objathor import (
     ObjathorAnnotation,
     ObjathorJob,

@@ -86,7 +86,8 @@ from asset_pipeline.normalise import _UP, Front, Normalisation, UpAxis, normalis
 from asset_pipeline.proximity import MeshProximity
 from asset_pipeline.repair import Repaired, repair
 from asset_pipeline.surfaces import _first_hits, support_surfaces
-from asset_pipeline.urdf import load_urdf, read_urdf
+from asset_pipeline.urdf import read_urdf
+from asset_pipeline.urdf_kinematics import load_urdf
 from holomj.errors import FormatError
 
 CARCASS = ""

@@ -104,7 +104,7 @@ def asset_id_for(path: Path) -> str:
     dropped; other characters not allowed in an id become ``_``. When every component is
     generic, the file name is used anyway.
     """
-    from asset_pipeline.urdf import asset_id_hint
+    from asset_pipeline.urdf_kinematics import asset_id_hint
 
     path = Path(path)
     hint = asset_id_hint(path)  # PartNet-Mobility's mobility.urdf: <model_cat>_<folder>

@@ -28,7 +28,7 @@ import numpy as np
 
 from asset_pipeline.kinematics import JointInfo, Kinematics, LinkGeometry, primitive
 from asset_pipeline.load import Material, Part
-from asset_pipeline.urdf import parse_xml, read_text
+from asset_pipeline.xml_tree import parse_xml, read_text
 from holomj.errors import FormatError
 
 MJCF_SUFFIXES = (".xml", ".mjcf")

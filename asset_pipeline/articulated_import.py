@@ -83,7 +83,7 @@ from asset_pipeline.import_records import (
     Sidecar,
     StepTimer,
     asked_mass,
-    check_id,
+    check_asset_id,
     chosen_category,
     derived_meta,
     explicit_fields,
@@ -164,7 +164,7 @@ def import_articulated(path: Path | str, asset_id: str, options: ImportOptions) 
     """Import the URDF or MJCF file ``path`` as asset ``asset_id`` with ``options``; see the
     module docstring."""
     path = Path(path)
-    check_id(asset_id)
+    check_asset_id(asset_id)
     timer = StepTimer()
     sidecar = Sidecar.of(path, options.sidecar)
     files: dict[str, bytes] = {}

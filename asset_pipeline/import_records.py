@@ -48,7 +48,7 @@ class ImportedAsset:
     report: dict[str, Any]
 
 
-def check_id(asset_id: str, where: str = "asset_id", fix: str = ID_FIX) -> None:
+def check_asset_id(asset_id: str, where: str = "asset_id", fix: str = ID_FIX) -> None:
     """A SpecError unless ``asset_id`` is a valid asset identifier."""
     try:
         TypeAdapter(Identifier).validate_python(asset_id)

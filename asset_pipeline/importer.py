@@ -37,7 +37,7 @@ from asset_pipeline.import_records import (
     Sidecar,
     StepTimer,
     asked_mass,
-    check_id,
+    check_asset_id,
     chosen_category,
     derived_meta,
     explicit_fields,
@@ -66,7 +66,7 @@ def import_asset(
     path = Path(path)
     if articulated_format(path) is not None:  # URDF or MJCF: an articulated asset
         return import_articulated(path, asset_id, options)
-    check_id(asset_id)
+    check_asset_id(asset_id)
     timer = StepTimer()
     sidecar = Sidecar.of(path, options.sidecar)
     mesh = _processed(path, options, timer)

@@ -47,7 +47,7 @@ from asset_pipeline.import_records import (
     ID_FIX,
     ImportedAsset,
     StepTimer,
-    check_id,
+    check_asset_id,
     derived_meta,
     file_sizes,
     mesh_geometry,
@@ -110,7 +110,7 @@ def import_objathor_asset(
     """
     options = options or ObjathorOptions()
     where = str(mesh.source)
-    check_id(uid, where, fix="uids become asset ids: " + ID_FIX.removeprefix("use "))
+    check_asset_id(uid, where, fix="uids become asset ids: " + ID_FIX.removeprefix("use "))
     timer = StepTimer()
     warnings = list(annotation.warnings) + list(mesh.warnings)
     turned = _turned(mesh, annotation, warnings)

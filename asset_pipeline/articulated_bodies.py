@@ -38,6 +38,13 @@ class Body:
     merged_joints: list[str] = field(default_factory=list)
     record: dict = field(default_factory=dict)
 
+    @property
+    def moving_joint(self) -> JointInfo:
+        """The joint a part moves on; a ValueError for the carcass."""
+        if self.joint is None:
+            raise ValueError(f"body {self.name!r} is the carcass: it has no joint")
+        return self.joint
+
 
 @dataclass
 class Built:
@@ -81,7 +88,9 @@ def split_bodies(kin: Kinematics, where: str, warnings: list[str]) -> tuple[Body
     parts = [b for b in bodies.values() if b.joint is not None]
     joint_names: set[str] = set(RESERVED_JOINTS)
     for body in parts:
-        body.record["joint_name"] = _unique(_identifier(body.joint.name, "joint"), joint_names)  # type: ignore[union-attr]
+        body.record["joint_name"] = _unique(
+            _identifier(body.moving_joint.name, "joint"), joint_names
+        )
     return carcass, parts
 
 
@@ -237,7 +246,7 @@ def opening_front(parts: list[Body], up_axis: UpAxis) -> Front:
 def _moved_joint(joint: JointInfo, frame: Normalisation) -> JointInfo:
     """``joint`` in the asset frame (``frame``: the Normalisation applied to the meshes)."""
     rot, scale = frame.rotation, frame.scale
-    low, high = joint.range  # type: ignore[misc]
+    low, high = joint.limits()
     if joint.type == "slide":
         low, high = low * scale, high * scale
     return replace(

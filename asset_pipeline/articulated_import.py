@@ -347,6 +347,8 @@ def _masses(
     """The whole asset's mass (as for a mesh import, over all bodies) and each body's share."""
     volumes = [sum(c.volume for c in b.colliders) for b in built]
     whole = trimesh.util.concatenate([b.repaired.physics for b in built])
+    if not isinstance(whole, trimesh.Trimesh):  # the concatenation of meshes is a mesh
+        raise TypeError("the bodies' physics meshes did not concatenate into one mesh")
     massed = physical.resolve_mass(info, whole, sum(volumes), given=given, density=density)
     return massed, _share_mass(massed.mass_kg, built, info, volumes)
 

@@ -77,7 +77,7 @@ def part_record(built: Built, mass: float, kin: Kinematics, asset_top: float) ->
         stiffness, springref = joint.stiffness or 0.0, joint.springref or 0.0
         if not vertical and not joint.stiffness:
             friction, stiffness, springref = _balance(joint, axis, friction, mass, built)
-    low, high = joint.range  # type: ignore[misc]
+    low, high = joint.limits()
     body.record["joint_report"].update(
         kind=kind, kind_source=kind_source, handle="heuristic (asset_pipeline.handles)"
     )
@@ -116,13 +116,13 @@ def _balance(
     com = weights @ centres / weights.sum()
     design = JointDesign(
         "hinge",
-        tuple(axis),  # type: ignore[arg-type]
-        tuple(joint.anchor),  # type: ignore[arg-type]
-        joint.range,  # type: ignore[arg-type]
+        tuple(axis),
+        tuple(joint.anchor),
+        joint.limits(),
         damping=0.0,
         frictionloss=friction,
     )
-    fitted = balanced(design, mass, tuple(com))  # type: ignore[arg-type]
+    fitted = balanced(design, mass, tuple(com))
     return fitted.frictionloss, fitted.stiffness, fitted.springref
 
 
@@ -165,10 +165,10 @@ def warn_touching(built: list[Built], warnings: list[str]) -> None:
     """Warn about parts whose colliders' boxes overlap another body's at the closed pose (a
     part and the body it hangs on excepted: their contacts are excluded in the model)."""
     boxes = []
-    for b in built:
-        for collider in b.colliders:
+    for done in built:
+        for collider in done.colliders:
             points = collider.points()
-            boxes.append((b.body, points.min(axis=0), points.max(axis=0)))
+            boxes.append((done.body, points.min(axis=0), points.max(axis=0)))
     reported: set[tuple[str, str]] = set()
     for i, (a, alow, ahigh) in enumerate(boxes):
         for b, blow, bhigh in boxes[i + 1 :]:

@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import errno
 import fcntl
+import functools
 import hashlib
 import itertools
 import json
@@ -147,7 +148,7 @@ def add_assets(root: Path | str, bundles: Sequence[AssetBundle]) -> Path:
             for bundle in checked:
                 replace_folder(
                     root / bundle.folder_name,
-                    lambda tmp, b=bundle: _fill_bundle(tmp, b, root / LIBRARY_BLOBS),
+                    functools.partial(_fill_bundle, bundle=bundle, store=root / LIBRARY_BLOBS),
                 )
             _commit_index(root, new_index)
         except BaseException:

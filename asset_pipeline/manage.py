@@ -82,10 +82,10 @@ def coacd_params(preset: str = "default", **overrides: float | int | None) -> An
         raise InputError(
             f"unknown preset {preset!r}", where="--preset", fix=f"use one of: {', '.join(PRESETS)}"
         )
-    given = {k: v for k, v in overrides.items() if v is not None}
+    given: dict[str, float | int | None] = {k: v for k, v in overrides.items() if v is not None}
     if "threshold" in given and "preprocessed_threshold" not in given:
         given["preprocessed_threshold"] = None  # a threshold asked for holds for every mesh
-    values = {**PRESETS[preset], **given}
+    values: dict[str, Any] = {**PRESETS[preset], **given}  # field name -> value, as the table
     return dataclasses.replace(CoacdParams(), **values)
 
 

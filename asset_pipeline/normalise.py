@@ -102,8 +102,8 @@ def normalise(
         scale=scale,
         rotation=rotation,
         translation=translation,
-        size=tuple(round(float(e), 6) for e in extent),  # type: ignore[arg-type]
-        source_size=tuple(round(float(e), 6) for e in source_size),  # type: ignore[arg-type]
+        size=_rounded3(extent),
+        source_size=_rounded3(source_size),
     )
     return out, info
 
@@ -116,3 +116,9 @@ def _bounds(vertex_sets: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
 
 def _fmt(values: np.ndarray) -> str:
     return " x ".join(f"{v:.4g}" for v in values)
+
+
+def _rounded3(values: np.ndarray) -> tuple[float, float, float]:
+    """Three extents rounded to the micrometre."""
+    x, y, z = (round(float(e), 6) for e in values)
+    return (x, y, z)

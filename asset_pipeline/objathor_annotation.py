@@ -176,7 +176,8 @@ def _bounding_box(data: dict, where: str, warnings: list[str]) -> tuple[float, f
         if isinstance(box.get("min"), dict) and isinstance(box.get("max"), dict):
             lo, hi = _xyz(box["min"]), _xyz(box["max"])
             if lo is not None and hi is not None:
-                extents = tuple(h - lo_ for lo_, h in zip(lo, hi, strict=True))
+                ex, ey, ez = (h - low for low, h in zip(lo, hi, strict=True))
+                extents = (ex, ey, ez)
         elif "x" in box:
             extents = _xyz(box)
         elif isinstance(box.get("size"), dict):
@@ -184,14 +185,14 @@ def _bounding_box(data: dict, where: str, warnings: list[str]) -> tuple[float, f
     if extents is None or min(extents) <= 0:
         warnings.append(f"{where}: boundingBox ignored (not a box with positive extents)")
         return None
-    return extents  # type: ignore[return-value]
+    return extents
 
 
 def _xyz(value: dict) -> tuple[float, float, float] | None:
-    numbers = [finite_number(value.get(k)) for k in "xyz"]
-    if any(n is None for n in numbers):
+    x, y, z = (finite_number(value.get(k)) for k in "xyz")
+    if x is None or y is None or z is None:
         return None
-    return tuple(numbers)  # type: ignore[return-value]
+    return (x, y, z)
 
 
 def _license(info: Any) -> tuple[str | None, str | None]:

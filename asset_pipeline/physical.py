@@ -136,7 +136,7 @@ def _info(name: str, row: dict, known: bool, placement: tuple[str, ...]) -> Cate
         friction=row["friction"],
         placement=placement,
         upright=row["upright"],
-        mass_range_kg=tuple(row["mass_range_kg"]),  # type: ignore[arg-type]
+        mass_range_kg=tuple(row["mass_range_kg"]),
     )
 
 

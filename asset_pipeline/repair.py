@@ -53,7 +53,10 @@ def repair(parts: list[Part]) -> Repaired:
     for part in parts:
         groups.setdefault(part.material.key, []).append(part)
     group_list = list(groups.values())
-    vertices, faces, face_group, uv = [], [], [], []
+    vertices: list[np.ndarray] = []
+    faces: list[np.ndarray] = []
+    face_group: list[np.ndarray] = []
+    uv: list[np.ndarray] = []
     offset = 0
     for g, members in enumerate(group_list):
         textured = members[0].material.texture_png is not None
@@ -61,8 +64,10 @@ def repair(parts: list[Part]) -> Repaired:
             vertices.append(part.vertices)
             faces.append(part.faces + offset)
             face_group.append(np.full(len(part.faces), g))
-            has_uv = textured and part.uv is not None
-            uv.append(part.uv if has_uv else np.zeros((len(part.vertices), 2)))
+            if textured and part.uv is not None:
+                uv.append(part.uv)
+            else:
+                uv.append(np.zeros((len(part.vertices), 2)))
             offset += len(part.vertices)
     all_v = np.concatenate(vertices)
     all_f = np.concatenate(faces)

@@ -52,6 +52,7 @@ from asset_pipeline.xml_tree import (
     Node,
     attr_float,
     attr_floats,
+    attr_vec3,
     origin_transform,
     parse_xml,
     positive_sizes,
@@ -120,7 +121,7 @@ class UrdfModel:
     def files(self) -> list[Path]:
         """Every mesh file it names, once, in order."""
         seen = [g.mesh for link in self.links.values() for g in link.geometry if g.mesh]
-        return list(dict.fromkeys(seen))  # type: ignore[arg-type]
+        return list(dict.fromkeys(seen))
 
 
 def read_urdf(path: Path | str) -> UrdfModel:
@@ -253,7 +254,7 @@ def _geometry(
         if not filename:
             raise FormatError(f"{what}: <mesh> (line {node.line}) has no filename", where=where)
         mesh = resolve_mesh(filename, path.parent, f"{what}: mesh {filename!r}", where)
-        scale = attr_floats(node, "scale", 3, what, where, default=(1.0, 1.0, 1.0))
+        scale = attr_vec3(node, "scale", what, where, default=(1.0, 1.0, 1.0))
         if any(s == 0 for s in scale):
             raise FormatError(f"{what}: mesh scale {scale} has a zero factor", where=where)
         return Geometry("mesh", origin, mesh=mesh, scale=scale, rgba=rgba, where=what)
@@ -376,4 +377,5 @@ def _colour(node: Node, where: str) -> tuple[float, float, float, float] | None:
     if colour is None:
         return None
     values = attr_floats(colour, "rgba", 4, f"material (line {node.line})", where)
-    return tuple(min(max(v, 0.0), 1.0) for v in values)  # type: ignore[return-value]
+    r, g, b, a = (min(max(v, 0.0), 1.0) for v in values)
+    return (r, g, b, a)

@@ -11,6 +11,7 @@ import numpy as np
 
 from asset_pipeline.kinematics import (
     JointInfo,
+    JointKind,
     Kinematics,
     LinkGeometry,
     coloured,
@@ -67,7 +68,12 @@ def asset_id_hint(path: Path) -> str | None:
     return f"{text}_{folder}" if folder else text
 
 
-_JOINT_KINDS = {"revolute": "hinge", "continuous": "hinge", "prismatic": "slide", "fixed": "fixed"}
+_JOINT_KINDS: dict[str, JointKind] = {
+    "revolute": "hinge",
+    "continuous": "hinge",
+    "prismatic": "slide",
+    "fixed": "fixed",
+}
 
 
 def load_urdf(path: Path | str, max_faces: int = 2_000_000) -> Kinematics:
@@ -81,7 +87,7 @@ def load_urdf(path: Path | str, max_faces: int = 2_000_000) -> Kinematics:
         joints.append(
             JointInfo(
                 name=joint.name,
-                type=_JOINT_KINDS[joint.type],  # type: ignore[arg-type]
+                type=_JOINT_KINDS[joint.type],
                 parent=joint.parent,
                 child=joint.child,
                 axis=at[:3, :3] @ joint.axis,

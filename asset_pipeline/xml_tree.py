@@ -97,8 +97,8 @@ def origin_transform(node: Node | None, what: str, where: str) -> np.ndarray:
     if node is None:
         return transform
     what = f"{what} <origin> (line {node.line})"
-    xyz = attr_floats(node, "xyz", 3, what, where, default=(0.0, 0.0, 0.0))
-    rpy = attr_floats(node, "rpy", 3, what, where, default=(0.0, 0.0, 0.0))
+    xyz = attr_vec3(node, "xyz", what, where, default=(0.0, 0.0, 0.0))
+    rpy = attr_vec3(node, "rpy", what, where, default=(0.0, 0.0, 0.0))
     transform[:3, :3] = rpy_matrix(rpy)
     transform[:3, 3] = xyz
     return transform
@@ -150,6 +150,18 @@ def attr_floats(
     if not all(math.isfinite(v) for v in values):
         raise FormatError(f"{what}: {key} of <{node.tag}> is not finite", where=where)
     return values
+
+
+def attr_vec3(
+    node: Node,
+    key: str,
+    what: str,
+    where: str,
+    default: tuple[float, float, float] | None = None,
+) -> tuple[float, float, float]:
+    """The three numbers of attribute ``key`` of ``node`` (see :func:`attr_floats`)."""
+    x, y, z = attr_floats(node, key, 3, what, where, default)
+    return (x, y, z)
 
 
 def attr_float(node: Node, key: str, what: str, where: str, default: float | None = None) -> float:

@@ -119,9 +119,10 @@ def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBun
     collision = []
     hulls: dict[int, np.ndarray] = {}
     for k, collider in enumerate(colliders):
-        part, hull = _collision_part(collider, f"hull_{k:02d}.obj")
+        name = f"hull_{k:02d}.obj"
+        part, hull = _collision_part(collider, name)
         if hull is not None:
-            files[part.mesh] = hull[0]  # type: ignore[index]
+            files[name] = hull[0]
             hulls[k] = hull[1]
         collision.append(part)
     volume = sum(c.volume_m3 for c in collision)
@@ -177,7 +178,8 @@ def material_visuals(
         if pattern is not None:  # the tint that, times the pattern, averages to the colour
             texture = texture_file(pattern)
             files[texture] = pattern_png(pattern)
-            rgba = tinted(rgba, pattern)  # type: ignore[assignment]
+            r, g, b, a = tinted(rgba, pattern)
+            rgba = (r, g, b, a)
         visual.append(
             VisualPart(
                 mesh=filename,
@@ -250,14 +252,14 @@ def with_collision(part: Part) -> Part | None:
     ``collide`` switch or it is on already."""
     if not dataclasses.is_dataclass(part) or isinstance(part, type):
         return None
-    names = {f.name for f in dataclasses.fields(part)}
-    if "collide" in names:
-        if part.collide:
+    values = {f.name: getattr(part, f.name) for f in dataclasses.fields(part)}
+    if "collide" in values:
+        if values["collide"]:
             return None
-        return dataclasses.replace(part, collide=True)  # type: ignore[type-var]
-    if "part" in names:
-        inner = with_collision(part.part)
-        return None if inner is None else dataclasses.replace(part, part=inner)  # type: ignore[type-var]
+        return dataclasses.replace(part, collide=True)
+    if "part" in values:
+        inner = with_collision(values["part"])
+        return None if inner is None else dataclasses.replace(part, part=inner)
     return None
 
 
@@ -341,8 +343,10 @@ def _collision_part(
     collider: Collider, hull_name: str
 ) -> tuple[CollisionPart, tuple[bytes, np.ndarray] | None]:
     """The metadata of a collider, and for a hull its OBJ file and its vertices as written."""
-    pos = tuple(_r(v) for v in collider.pos)
-    quat = tuple(_r(v) for v in collider.quat)
+    px, py, pz = collider.pos
+    qw, qx, qy, qz = collider.quat
+    pos = (_r(px), _r(py), _r(pz))
+    quat = (_r(qw), _r(qx), _r(qy), _r(qz))
     if collider.kind == "mesh":
         vertices, faces = _hull_mesh(np.asarray(collider.vertices, dtype=float))
         mesh = rounded(Mesh(vertices, faces))

@@ -272,5 +272,6 @@ def colour_rgb(name: str) -> tuple[float, float, float] | None:
     if rest in COLOURS and head in LIGHTER + DARKER:
         rgb = np.asarray(COLOURS[rest])
         mixed = rgb + 0.4 * (1.0 - rgb) if head in LIGHTER else rgb * 0.55
-        return tuple(round(float(v), 4) for v in mixed)  # type: ignore[return-value]
+        r, g, b = (round(float(v), 4) for v in mixed)
+        return (r, g, b)
     return None

@@ -88,8 +88,8 @@ def condition(info: CategoryInfo, size: Vec3, seed: int, attributes: Attributes)
     rng = rng_for(name, seed)
     own = shape_builder(name, shape) if shape is not None else None
     if own is not None:
-        parts, words = own(size, rng)
-        design = Design(tuple(parts), words)
+        shaped_parts, shaped_words = own(size, rng)
+        design = Design(tuple(shaped_parts), shaped_words)
     elif shape is not None or attributes.parts:
         design = _drawn(info, size, seed, rng, shape, attributes.parts)
     else:

@@ -4,6 +4,7 @@ the main material of a design (the one an object's own colour or material goes t
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 from dataclasses import replace
 
 import numpy as np
@@ -83,7 +84,7 @@ def finished(base: Material, attributes: Attributes) -> Material:
     slug = re.sub(r"[^a-z0-9]+", "_", " ".join(label_parts)).strip("_")
     return Material(
         f"{base.name}__{slug}",
-        tuple(round(float(v), 4) for v in rgba),  # type: ignore[arg-type]
+        _rounded_rgba(rgba),
         specular,
         shininess,
         " ".join(label_parts),
@@ -114,3 +115,8 @@ def main_material(parts: tuple[Part, ...] | list[Part]) -> Material:
 def recoloured(parts: tuple[Part, ...], base: Material, material: Material) -> tuple[Part, ...]:
     """``parts`` with every part of material ``base`` made of ``material``."""
     return tuple(with_material(p, material) if p.material.name == base.name else p for p in parts)
+
+
+def _rounded_rgba(rgba: Iterable[float]) -> tuple[float, float, float, float]:
+    r, g, b, a = (round(float(v), 4) for v in rgba)
+    return (r, g, b, a)

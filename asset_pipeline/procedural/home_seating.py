@@ -141,9 +141,9 @@ def rocking_chair(size: Vec3, rng: Rng) -> Design:
     seat_z = seat_top - seat_t - cushion_t
     arms = chance(rng, 0.7)
     arm_z = seat_top + uniform(rng, 0.18, 0.24)
-    for y in ((-hw, -hw + ls), (hw - ls, hw)):
-        parts.append(block((xf - ls, xf), y, (rh, arm_z if arms else seat_z), wood))
-        parts.append(block((xb, xb + ls), y, (rh, h), wood))
+    for ys in ((-hw, -hw + ls), (hw - ls, hw)):
+        parts.append(block((xf - ls, xf), ys, (rh, arm_z if arms else seat_z), wood))
+        parts.append(block((xb, xb + ls), ys, (rh, h), wood))
     parts.append(block((xb, xf), (-hw, hw), (seat_z, seat_z + seat_t), wood))
     yi = hw - ls
     if cushion:
@@ -161,8 +161,8 @@ def rocking_chair(size: Vec3, rng: Rng) -> Design:
             (xb, xf), (-hw, hw), (seat_z, seat_z + seat_t), wood, surface=(xb + ls, xf, -yi, yi)
         )
     if arms:
-        for y in ((-hw, -hw + ls + 0.01), (hw - ls - 0.01, hw)):
-            parts.append(block((xb + ls, xf), y, (arm_z - 0.03, arm_z), wood))
+        for ys in ((-hw, -hw + ls + 0.01), (hw - ls - 0.01, hw)):
+            parts.append(block((xb + ls, xf), ys, (arm_z - 0.03, arm_z), wood))
     back = pick(rng, ("spindle", "slat", "upholstered"))
     xr = (xb + 0.005, xb + ls - 0.005)
     low, top_rail = seat_top + 0.1, h - 0.07

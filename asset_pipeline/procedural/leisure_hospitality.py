@@ -208,9 +208,9 @@ def popcorn_machine(size: Vec3, rng: Rng) -> Design:
     )
     parts.append(block((-hd, hd), (-hw, hw), (cart_top, cart_top + 0.03), BLACK_METAL))
     z0 = cart_top + 0.03
-    for x in ((-hd, -hd + post), (hd - post, hd)):
-        for y in ((-hw, -hw + post), (hw - post, hw)):
-            parts.append(block(x, y, (z0, glass_top), colour))
+    for xs in ((-hd, -hd + post), (hd - post, hd)):
+        for ys in ((-hw, -hw + post), (hw - post, hw)):
+            parts.append(block(xs, ys, (z0, glass_top), colour))
     g = 0.006
     parts += [
         block((hd - g, hd), (-hw + post, hw - post), (z0, glass_top), CLEAR_GLASS),

@@ -261,7 +261,7 @@ def vase(size: Vec3, rng: Rng) -> Design:
     ceramic = pick(rng, CERAMICS)
     if chance(rng, 0.6):
         neck = uniform(rng, 0.45, 0.6) * r
-        profile = (
+        profile: tuple[tuple[float, float], ...] = (
             (0.7 * r, 0.0),
             (r, 0.35 * h),
             (0.8 * r, 0.65 * h),

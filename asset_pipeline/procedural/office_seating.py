@@ -138,7 +138,7 @@ def stool(size: Vec3, rng: Rng) -> Design:
         r = 0.5 * d
         inset = 0.45 * r
         parts += tagged("legs", round_legs(d, w, leg_top, 0.016, wood, inset=inset))
-        seat = Cylinder((0.0, 0.0, h - 0.5 * seat_t), r, 0.5 * seat_t, wood, surface=True)
+        seat: Part = Cylinder((0.0, 0.0, h - 0.5 * seat_t), r, 0.5 * seat_t, wood, surface=True)
         parts += tagged("seat", [seat])
         reach = 0.5 * d - inset
     else:

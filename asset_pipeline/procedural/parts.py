@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from typing import Literal, Protocol
+from typing import Any, ClassVar, Literal, Protocol
 
 import numpy as np
 
@@ -152,7 +152,10 @@ class Surface:
 
 
 class Part(Protocol):
-    """What an asset is made of (parts are frozen dataclasses, so the material is read-only)."""
+    """What an asset is made of (parts are frozen dataclasses, so the material is read-only and
+    ``dataclasses.replace`` makes a changed copy)."""
+
+    __dataclass_fields__: ClassVar[dict[str, Any]]
 
     @property
     def material(self) -> Material:

@@ -73,14 +73,14 @@ def _upholstered(size: Vec3, rng: Rng, seats: int) -> tuple[list[Part], dict[str
     inner = w - 2 * arm_w
     for i in range(seats):
         y0 = -hw + arm_w + i * inner / seats
-        cushion = block(
+        seat_cushion = block(
             (-hd + back_d, hd - 0.02),
             (y0, y0 + inner / seats),
             (seat_z, seat_top),
             fabric,
             surface=True,
         )
-        parts += tagged("cushions", [cushion])
+        parts += tagged("cushions", [seat_cushion])
     words = {
         "fabric": fabric.words if fabric is not LEATHER else "brown leather",
         "legs": {"plinth": "a low wooden plinth", "metal legs": "black metal legs"}.get(

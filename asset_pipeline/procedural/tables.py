@@ -137,8 +137,8 @@ def desk(size: Vec3, rng: Rng) -> Design:
     """A desk on legs or with a drawer pedestal on its right (+Y) and panel legs."""
     d, w, h = size
     if chance(rng, 0.4):
-        parts, words = _table(size, rng, shelf_chance=0.0, allow_round=False)
-        return Design(tuple(parts), {"top": words["top"], "style": f"on {words['legs']}"})
+        table, words = _table(size, rng, shelf_chance=0.0, allow_round=False)
+        return Design(tuple(table), {"top": words["top"], "style": f"on {words['legs']}"})
     hd, hw = 0.5 * d, 0.5 * w
     mat = pick(rng, CASE_FINISHES)
     handle = pick(rng, (BLACK_METAL, CHROME, BRASS))

@@ -74,8 +74,8 @@ def towel_rail(size: Vec3, rng: Rng) -> Design:
     parts: list[Part] = []
     for y in ((-hw, -hw + ts), (hw - ts, hw)):
         parts.append(block((xc - 0.5 * ts, xc + 0.5 * ts), y, (0.0, h), metal))
-        for z in ((0.0, 0.025), (h - 0.04, h - 0.015)):
-            parts.append(block((-hd, xc - 0.5 * ts), (y[0] + 0.005, y[1] - 0.005), z, metal))
+        for rail in ((0.0, 0.025), (h - 0.04, h - 0.015)):
+            parts.append(block((-hd, xc - 0.5 * ts), (y[0] + 0.005, y[1] - 0.005), rail, metal))
     bars = int(clamp(round((h - 0.06) / 0.08), 2, 20))
     pitch = (h - 0.06) / bars
     for i in range(bars):

@@ -150,9 +150,10 @@ def _collision(
         collision[key] = []
         prefix = f"{key}_" if key else ""
         for k, collider in enumerate(found):
-            part, hull = _collision_part(collider, f"{prefix}hull_{k:02d}.obj")
+            name = f"{prefix}hull_{k:02d}.obj"
+            part, hull = _collision_part(collider, name)
             if hull is not None:
-                files[part.mesh] = hull[0]
+                files[name] = hull[0]
                 hull_sizes.append(len(hull[1]))
             collision[key].append(part)
     return collision, hull_sizes

@@ -35,6 +35,11 @@ TABLE_HEADING = "Package map"  # the doc's section whose table must match ALLOWE
 # imported by anyone, import nothing of ours; never named in an ALLOWED line
 FOUNDATION = ("holomj.errors", "holomj.version", "holomj.file_names")
 
+
+def _holomj(*names: str) -> tuple[str, ...]:
+    return tuple(f"holomj.{name}" for name in names)
+
+
 # package -> (what it owns, the packages it may import besides itself and FOUNDATION)
 ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "holomj.errors": ("the HolomjError types", ()),
@@ -45,116 +50,88 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "holomj.data": ("knowledge and catalogue data files", ()),
     "holomj.spec": (
         "pure data: scene, plan, assets, report, robot record, materials",
-        ("holomj.data",),
+        _holomj("data"),
     ),
     "holomj.library": (
         "asset libraries on disk (read-only views), their location",
-        ("holomj.spec", "holomj.data"),
+        _holomj("spec", "data"),
     ),
     "holomj.layout": (
         "pure geometry: floor plans, doors/windows, furniture solver, wall objects",
-        ("holomj.seeds", "holomj.spec", "holomj.library", "holomj.data"),
+        _holomj("seeds", "spec", "library", "data"),
     ),
     "holomj.retrieval": (
         "asset and material scoring (text, visual, size), embedding cache",
-        ("holomj.atomic", "holomj.spec", "holomj.library", "holomj.data"),
+        _holomj("atomic", "spec", "library", "data"),
     ),
     "holomj.plan": (
         "request -> ScenePlan: offline knowledge-base planner, LLM planner",
-        (
-            "holomj.seeds",
-            "holomj.spec",
-            "holomj.library",
-            "holomj.layout",
-            "holomj.retrieval",
-            "holomj.data",
-        ),
+        _holomj("seeds", "spec", "library", "layout", "retrieval", "data"),
     ),
     "holomj.compose": (
         "plan + assets -> SceneSpec: house shell, room furnishing, small objects, relation report",
-        (
-            "holomj.seeds",
-            "holomj.spec",
-            "holomj.library",
-            "holomj.layout",
-            "holomj.retrieval",
-            "holomj.data",
-        ),
+        _holomj("seeds", "spec", "library", "layout", "retrieval", "data"),
     ),
     "holomj.importers": (
         "ProcTHOR/Holodeck house JSON and SceneDef -> SceneSpec",
-        ("holomj.spec", "holomj.library", "holomj.data"),
+        _holomj("spec", "library", "data"),
     ),
     "holomj.mjcf": (
         "SceneSpec -> MjSpec -> compiled model (the only MJCF builder)",
-        ("holomj.spec", "holomj.library"),
+        _holomj("spec", "library"),
     ),
     "holomj.physics": (
         "penetration audit, settle, stability, repair, spawn-and-drop (in memory)",
-        (
-            "holomj.seeds",
-            "holomj.spec",
-            "holomj.library",
-            "holomj.mjcf",
-            "holomj.layout",
-            "holomj.data",
-        ),
+        _holomj("seeds", "spec", "library", "mjcf", "layout", "data"),
     ),
     "holomj.robots": (
         "robot registry, preparation, floor spot, attaching (in memory)",
-        ("holomj.spec", "holomj.mjcf", "holomj.physics"),
+        _holomj("spec", "mjcf", "physics"),
     ),
     "holomj.rendering": (
         "headless rendering, plan view, HTML report (in memory)",
-        ("holomj.spec", "holomj.library", "holomj.mjcf"),
+        _holomj("spec", "library", "mjcf"),
     ),
     "holomj.evaluation": (
         "scene metrics from a folder's geometry (never the planner): fidelity, support, reach",
-        ("holomj.spec", "holomj.data"),
+        _holomj("spec", "data"),
     ),
     "holomj.formats": (
         "output formats in memory: objects.json, navigation map, summaries, GLB, USD, URDF",
-        ("holomj.spec", "holomj.mjcf", "holomj.physics", "holomj.robots"),
+        _holomj("spec", "mjcf", "physics", "robots"),
     ),
     "holomj.edit": (
         "scene edit operations applied in memory (add, move, remove, replace, ...)",
-        (
-            "holomj.seeds",
-            "holomj.spec",
-            "holomj.library",
-            "holomj.layout",
-            "holomj.retrieval",
-            "holomj.plan",
-            "holomj.mjcf",
-            "holomj.physics",
-        ),
+        _holomj("seeds", "spec", "library", "layout", "retrieval", "plan", "mjcf", "physics"),
     ),
     "holomj.refinement": (
         "refine decisions in memory: instructions, goals, offline and LLM planners, safety, "
         "pointing",
-        ("holomj.spec", "holomj.plan", "holomj.evaluation"),
+        _holomj("spec", "plan", "evaluation"),
     ),
     "holomj.jobs": (
         "one module per user-facing job; the output folder (atomic I/O)",
         (
-            "holomj.edit",
-            "holomj.refinement",
-            "holomj.atomic",
-            "holomj.seeds",
-            "holomj.data",
-            "holomj.spec",
-            "holomj.library",
-            "holomj.layout",
-            "holomj.retrieval",
-            "holomj.plan",
-            "holomj.compose",
-            "holomj.importers",
-            "holomj.mjcf",
-            "holomj.physics",
-            "holomj.robots",
-            "holomj.rendering",
-            "holomj.formats",
-            "holomj.evaluation",
+            *_holomj(
+                "edit",
+                "refinement",
+                "atomic",
+                "seeds",
+                "data",
+                "spec",
+                "library",
+                "layout",
+                "retrieval",
+                "plan",
+                "compose",
+                "importers",
+                "mjcf",
+                "physics",
+                "robots",
+                "rendering",
+                "formats",
+                "evaluation",
+            ),
             "asset_pipeline.default_library",
             "asset_pipeline:importers",
             "asset_pipeline.library_writer",
@@ -164,32 +141,22 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.batch": (
         "many jobs on a local worker pool or Ray, resumable",
-        ("holomj.atomic", "holomj.spec", "holomj.jobs"),
+        _holomj("atomic", "spec", "jobs"),
     ),
-    "holomj.api": (
-        "the Python API re-exported from holomj",
-        ("holomj.spec", "holomj.library", "holomj.jobs"),
-    ),
+    "holomj.api": ("the Python API re-exported from holomj", _holomj("spec", "library", "jobs")),
     "holomj.cli": (
         "thin typer commands: parse options, call one job, print",
-        (
-            "holomj.api",
-            "holomj.seeds",
-            "holomj.spec",
-            "holomj.jobs",
-            "holomj.batch",
-            "holomj.importers",  # the list of input formats, for --format
-        ),
+        _holomj("api", "seeds", "spec", "jobs", "batch", "importers"),
     ),
-    "holomj.__main__": ("python -m holomj", ("holomj.cli",)),
-    "holomj": ("the package root: version and the lazy API", ("holomj.api",)),
+    "holomj.__main__": ("python -m holomj", _holomj("cli")),
+    "holomj": ("the package root: version and the lazy API", _holomj("api")),
     "asset_pipeline": (
         "the package root (loads holomj first), the category data file",
         ("holomj",),
     ),
     "asset_pipeline:mesh": (
         "one mesh -> simulation-ready parts: load, frame, repair, CoACD, hulls, surfaces, mass",
-        ("holomj.spec", "asset_pipeline"),
+        (*_holomj("spec"), "asset_pipeline"),
     ),
     "asset_pipeline:articulated_files": (
         "URDF and MJCF files -> the kinematic tree of an articulated asset",
@@ -197,22 +164,20 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "asset_pipeline.library_writer": (
         "writes asset libraries to disk, atomically and byte-deterministically",
-        ("holomj.atomic", "holomj.spec"),
+        _holomj("atomic", "spec"),
     ),
     "asset_pipeline.collider_audit": (
         "how far an asset's visual surface reaches outside its colliders",
-        ("holomj.spec",),
+        _holomj("spec"),
     ),
     "asset_pipeline.thumbnails": (
         "thumbnails of an asset rendered headlessly",
-        ("holomj.spec", "holomj.library", "holomj.mjcf", "asset_pipeline.library_writer"),
+        (*_holomj("spec", "library", "mjcf"), "asset_pipeline.library_writer"),
     ),
     "asset_pipeline:importers": (
         "mesh, URDF/MJCF and objathor files -> library entries (ids, cache, process pool)",
         (
-            "holomj.atomic",
-            "holomj.spec",
-            "holomj.library",
+            *_holomj("atomic", "spec", "library"),
             "asset_pipeline:mesh",
             "asset_pipeline:articulated_files",
             "asset_pipeline.library_writer",
@@ -223,8 +188,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "asset_pipeline.procedural": (
         "parametric furniture, fixtures and small objects: parts, assembly, OBJ files",
         (
-            "holomj.spec",
-            "holomj.mjcf",
+            *_holomj("spec", "mjcf"),
             "asset_pipeline.library_writer",
             "asset_pipeline.collider_audit",
             "asset_pipeline.procedural.articulated",
@@ -233,7 +197,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "asset_pipeline.procedural.articulated": (
         "procedural furniture and appliances with doors, drawers and lids",
         (
-            "holomj.spec",
+            *_holomj("spec"),
             "asset_pipeline.library_writer",
             "asset_pipeline.collider_audit",
             "asset_pipeline.procedural",
@@ -242,7 +206,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "asset_pipeline.default_library": (
         "the procedural default library: built on first use, rebuilt when generators change",
         (
-            "holomj.library",
+            *_holomj("library"),
             "asset_pipeline.library_writer",
             "asset_pipeline.procedural",
             "asset_pipeline.procedural.articulated",

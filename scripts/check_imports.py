@@ -36,8 +36,14 @@ TABLE_HEADING = "Package map"  # the doc's section whose table must match ALLOWE
 FOUNDATION = ("holomj.errors", "holomj.version", "holomj.file_names")
 
 
-def _holomj(*names: str) -> tuple[str, ...]:
-    return tuple(f"holomj.{name}" for name in names)
+def _holomj(names: str) -> tuple[str, ...]:
+    """``"spec library"`` -> ``("holomj.spec", "holomj.library")``."""
+    return tuple(f"holomj.{name}" for name in names.split())
+
+
+def _asset_pipeline(names: str) -> tuple[str, ...]:
+    """``"load :mesh"`` -> ``("asset_pipeline.load", "asset_pipeline:mesh")`` (a group)."""
+    return tuple(f"asset_pipeline{'' if n[0] == ':' else '.'}{n}" for n in names.split())
 
 
 # package -> (what it owns, the packages it may import besides itself and FOUNDATION)
@@ -54,99 +60,80 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.library": (
         "asset libraries on disk (read-only views), their location",
-        _holomj("spec", "data"),
+        _holomj("spec data"),
     ),
     "holomj.layout": (
         "pure geometry: floor plans, doors/windows, furniture solver, wall objects",
-        _holomj("seeds", "spec", "library", "data"),
+        _holomj("seeds spec library data"),
     ),
     "holomj.retrieval": (
         "asset and material scoring (text, visual, size), embedding cache",
-        _holomj("atomic", "spec", "library", "data"),
+        _holomj("atomic spec library data"),
     ),
     "holomj.plan": (
         "request -> ScenePlan: offline knowledge-base planner, LLM planner",
-        _holomj("seeds", "spec", "library", "layout", "retrieval", "data"),
+        _holomj("seeds spec library layout retrieval data"),
     ),
     "holomj.compose": (
         "plan + assets -> SceneSpec: house shell, room furnishing, small objects, relation report",
-        _holomj("seeds", "spec", "library", "layout", "retrieval", "data"),
+        _holomj("seeds spec library layout retrieval data"),
     ),
     "holomj.importers": (
         "ProcTHOR/Holodeck house JSON and SceneDef -> SceneSpec",
-        _holomj("spec", "library", "data"),
+        _holomj("spec library data"),
     ),
     "holomj.mjcf": (
         "SceneSpec -> MjSpec -> compiled model (the only MJCF builder)",
-        _holomj("spec", "library"),
+        _holomj("spec library"),
     ),
     "holomj.physics": (
         "penetration audit, settle, stability, repair, spawn-and-drop (in memory)",
-        _holomj("seeds", "spec", "library", "mjcf", "layout", "data"),
+        _holomj("seeds spec library mjcf layout data"),
     ),
     "holomj.robots": (
         "robot registry, preparation, floor spot, attaching (in memory)",
-        _holomj("spec", "mjcf", "physics"),
+        _holomj("spec mjcf physics"),
     ),
     "holomj.rendering": (
         "headless rendering, plan view, HTML report (in memory)",
-        _holomj("spec", "library", "mjcf"),
+        _holomj("spec library mjcf"),
     ),
     "holomj.evaluation": (
         "scene metrics from a folder's geometry (never the planner): fidelity, support, reach",
-        _holomj("spec", "data"),
+        _holomj("spec data"),
     ),
     "holomj.formats": (
         "output formats in memory: objects.json, navigation map, summaries, GLB, USD, URDF",
-        _holomj("spec", "mjcf", "physics", "robots"),
+        _holomj("spec mjcf physics robots"),
     ),
     "holomj.edit": (
         "scene edit operations applied in memory (add, move, remove, replace, ...)",
-        _holomj("seeds", "spec", "library", "layout", "retrieval", "plan", "mjcf", "physics"),
+        _holomj("seeds spec library layout retrieval plan mjcf physics"),
     ),
     "holomj.refinement": (
         "refine decisions in memory: instructions, goals, offline and LLM planners, safety, "
         "pointing",
-        _holomj("spec", "plan", "evaluation"),
+        _holomj("spec plan evaluation"),
     ),
     "holomj.jobs": (
         "one module per user-facing job; the output folder (atomic I/O)",
         (
             *_holomj(
-                "edit",
-                "refinement",
-                "atomic",
-                "seeds",
-                "data",
-                "spec",
-                "library",
-                "layout",
-                "retrieval",
-                "plan",
-                "compose",
-                "importers",
-                "mjcf",
-                "physics",
-                "robots",
-                "rendering",
-                "formats",
-                "evaluation",
+                "edit refinement atomic seeds data spec library layout retrieval plan compose"
             ),
-            "asset_pipeline.default_library",
-            "asset_pipeline:importers",
-            "asset_pipeline.library_writer",
-            "asset_pipeline.procedural",
-            "asset_pipeline.procedural.articulated",
+            *_holomj("importers mjcf physics robots rendering formats evaluation"),
+            *_asset_pipeline("default_library :importers library_writer procedural"),
+            *_asset_pipeline("procedural.articulated"),
         ),
     ),
     "holomj.batch": (
         "many jobs on a local worker pool or Ray, resumable",
-        _holomj("atomic", "spec", "jobs"),
+        _holomj("atomic spec jobs"),
     ),
-    "holomj.api": ("the Python API re-exported from holomj", _holomj("spec", "library", "jobs")),
+    "holomj.api": ("the Python API re-exported from holomj", _holomj("spec library jobs")),
     "holomj.cli": (
         "thin typer commands: parse options, call one job, print",
-        _holomj("api", "seeds", "spec", "jobs", "batch", "importers"),
+        _holomj("api seeds spec jobs batch importers"),  # importers: the formats, for --format
     ),
     "holomj.__main__": ("python -m holomj", _holomj("cli")),
     "holomj": ("the package root: version and the lazy API", _holomj("api")),
@@ -164,7 +151,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "asset_pipeline.library_writer": (
         "writes asset libraries to disk, atomically and byte-deterministically",
-        _holomj("atomic", "spec"),
+        _holomj("atomic spec"),
     ),
     "asset_pipeline.collider_audit": (
         "how far an asset's visual surface reaches outside its colliders",
@@ -172,78 +159,43 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "asset_pipeline.thumbnails": (
         "thumbnails of an asset rendered headlessly",
-        (*_holomj("spec", "library", "mjcf"), "asset_pipeline.library_writer"),
+        (*_holomj("spec library mjcf"), *_asset_pipeline("library_writer")),
     ),
     "asset_pipeline:importers": (
         "mesh, URDF/MJCF and objathor files -> library entries (ids, cache, process pool)",
         (
-            *_holomj("atomic", "spec", "library"),
-            "asset_pipeline:mesh",
-            "asset_pipeline:articulated_files",
-            "asset_pipeline.library_writer",
-            "asset_pipeline.thumbnails",
-            "asset_pipeline.procedural.articulated",
+            *_holomj("atomic spec library"),
+            *_asset_pipeline(":mesh :articulated_files library_writer thumbnails"),
+            *_asset_pipeline("procedural.articulated"),
         ),
     ),
     "asset_pipeline.procedural": (
         "parametric furniture, fixtures and small objects: parts, assembly, OBJ files",
         (
-            *_holomj("spec", "mjcf"),
-            "asset_pipeline.library_writer",
-            "asset_pipeline.collider_audit",
-            "asset_pipeline.procedural.articulated",
+            *_holomj("spec mjcf"),
+            *_asset_pipeline("library_writer collider_audit procedural.articulated"),
         ),
     ),
     "asset_pipeline.procedural.articulated": (
         "procedural furniture and appliances with doors, drawers and lids",
-        (
-            *_holomj("spec"),
-            "asset_pipeline.library_writer",
-            "asset_pipeline.collider_audit",
-            "asset_pipeline.procedural",
-        ),
+        (*_holomj("spec"), *_asset_pipeline("library_writer collider_audit procedural")),
     ),
     "asset_pipeline.default_library": (
         "the procedural default library: built on first use, rebuilt when generators change",
         (
             *_holomj("library"),
-            "asset_pipeline.library_writer",
-            "asset_pipeline.procedural",
-            "asset_pipeline.procedural.articulated",
+            *_asset_pipeline("library_writer procedural procedural.articulated"),
         ),
     ),
 }
 # a map name with a colon groups modules of a flat package: name -> its modules (and their trees)
 GROUPS: dict[str, tuple[str, ...]] = {
-    "asset_pipeline:mesh": tuple(
-        f"asset_pipeline.{name}"
-        for name in (
-            "load",
-            "normalise",
-            "repair",
-            "decompose",
-            "hulls",
-            "objfile",
-            "proximity",
-            "surfaces",
-            "physical",
-            "annotate",
-            "handles",
-        )
+    "asset_pipeline:mesh": _asset_pipeline(
+        "load normalise repair decompose hulls objfile proximity surfaces physical annotate handles"
     ),
-    "asset_pipeline:articulated_files": tuple(
-        f"asset_pipeline.{name}" for name in ("kinematics", "urdf", "mjcf_import")
-    ),
-    "asset_pipeline:importers": tuple(
-        f"asset_pipeline.{name}"
-        for name in (
-            "import_records",
-            "importer",
-            "articulated_import",
-            "manage",
-            "objathor",
-            "objathor_import",
-        )
+    "asset_pipeline:articulated_files": _asset_pipeline("kinematics urdf mjcf_import"),
+    "asset_pipeline:importers": _asset_pipeline(
+        "import_records importer articulated_import manage objathor objathor_import"
     ),
 }
 # packages in the map before their first module exists: their imports are not held to be used

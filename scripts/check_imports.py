@@ -403,7 +403,8 @@ def _cycle_problems(what: str, edges: list[tuple[str, str, Edge]]) -> list[str]:
     for knot in cycles(graph):
         members = set(knot)
         inside = sorted(
-            {(s, t, e.where, e.kind) for s, t, e in edges if s in members and t in members}
+            {(s, t, e.where, e.kind) for s, t, e in edges if s in members and t in members},
+            key=lambda i: (i[2].rpartition(":")[0], int(i[2].rpartition(":")[2]), i[0], i[1]),
         )
         lines = [
             f"{what} import cycle through {len(knot)} {what}s: "

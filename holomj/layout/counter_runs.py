@@ -37,12 +37,13 @@ The shape is chosen before solving: :func:`fit` measures each shape's cheapest a
 against the free stretches of the room's walls (clear of door zones, and of the zones of windows
 lower than the leg; :class:`WallSpace`), then the seeded generator draws among the shapes that
 fit (:func:`shape_weights`: a narrow room leans to a galley or one wall, a big square one to an
-L or a U), unless the room's words ask for one (:func:`requested_shape`). Kitchen windows sit
-above the worktop: when a shape fits only so, the windows the run stands in front of get their
-sills raised (:func:`holomj.layout.window_moves.raise_sill`; the record's ``raised_windows``,
-applied by :func:`run_windows`). The order of the modules keeps the sink and the cooker off the
-open ends when there are plain modules enough to end the run, the cooker and the dishwasher out
-of corners, the dishwasher next to the sink and, among equally good orders, the sink nearest a
+L or a U), unless the plan asks for one (:attr:`holomj.spec.plan.PlanRoom.counter_run_shape`,
+read by the planner from the request's words). Kitchen windows sit above the worktop: when a
+shape fits only so, the windows the run stands in front of get their sills raised
+(:func:`holomj.layout.window_moves.raise_sill`; the record's ``raised_windows``, applied by
+:func:`run_windows`). The order of the modules keeps the sink and the cooker off the open ends
+when there are plain modules enough to end the run, the cooker and the dishwasher out of
+corners, the dishwasher next to the sink and, among equally good orders, the sink nearest a
 window.
 
 A shape that does not fit (the solver leaves a leg out or puts it elsewhere, or the split breaks
@@ -58,7 +59,6 @@ from __future__ import annotations
 
 import itertools
 import math
-import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -81,7 +81,6 @@ from holomj.layout.solve import (
     hard_checks,
 )
 from holomj.layout.window_moves import raise_sill
-from holomj.spec.plan import PlanRoom
 from holomj.spec.scene import Window
 
 RUN_CATEGORIES = frozenset(
@@ -130,22 +129,6 @@ JUNCTION_PENALTY = {"stove": 1.0, "dishwasher": 2.0}
 SINK_BY_STOVE_PENALTY = 1.0
 DISHWASHER_AWAY_PENALTY = 1.0
 PLAIN_CATEGORIES = frozenset({"kitchen_counter", "base_cabinet"})
-
-_SHAPE_WORDS: tuple[tuple[str, re.Pattern[str]], ...] = (
-    ("U", re.compile(r"\bu[\s-]*shaped?\b|\bhorseshoe\b")),
-    ("L", re.compile(r"\bl[\s-]*shaped?\b")),
-    ("galley", re.compile(r"\bgalley\b|\bparallel\b|\bdouble[\s-]*(?:wall|sided)\b")),
-    ("one_wall", re.compile(r"\b(?:one|single)[\s-]*wall\b|\bstraight\b|\blinear\b")),
-)
-_KITCHEN = r"(?:kitchen\w*|counters?|worktops?|countertops?|cabinets?|cabinetry|cupboards?)"
-# A shape word asks for a run only right before a kitchen word ("an L-shaped kitchen", "galley
-# style kitchen", "U-shaped counters") or after one with nothing but a phrase of shape between
-# ("a kitchen laid out in a U shape"): "an L-shaped living room and a kitchen" asks nothing.
-_KITCHEN_AFTER = re.compile(rf"^[\s-]*(?:[a-z]+[\s-]+)?{_KITCHEN}\b")
-_KITCHEN_BEFORE = re.compile(
-    rf"\b{_KITCHEN}\s+(?:(?:laid|set|arranged|built|fitted|out|in|into|as|an?|the|like|"
-    r"with|of|shape|shaped|form|style)\s+){0,6}$"
-)
 
 
 @dataclass(frozen=True)
@@ -256,32 +239,6 @@ def run_modules(
             )
         )
     return out
-
-
-def requested_shape(plan_room: PlanRoom, request: str = "") -> str | None:
-    """The run shape the room's words ask for (``"U"``, ``"L"``, ``"galley"``, ``"one_wall"``),
-    else None.
-
-    Read from the room's id and type, the descriptions of its run modules and island (an
-    ``L-shaped kitchen counter``), the phrases of its relations and ``request`` (the prompt):
-    there a shape word counts only next to a kitchen word (``a galley kitchen``, ``U-shaped
-    counters``, ``kitchen in an L shape``), so that an L-shaped living room asks nothing."""
-    own = [plan_room.id.replace("_", " "), plan_room.type.replace("_", " ")]
-    for obj in plan_room.objects:
-        if obj.category in RUN_CATEGORIES or obj.category == ISLAND_CATEGORY:
-            own.append(obj.description or obj.name)
-    own.extend(rel.phrase for rel in plan_room.relations)
-    text = " ".join(own).lower()
-    for shape, pattern in _SHAPE_WORDS:
-        if pattern.search(text):
-            return shape
-    words = request.lower()
-    for shape, pattern in _SHAPE_WORDS:
-        for match in pattern.finditer(words):
-            before = words[max(0, match.start() - 60) : match.start()]
-            if _KITCHEN_AFTER.search(words[match.end() :]) or _KITCHEN_BEFORE.search(before):
-                return shape
-    return None
 
 
 # --------------------------------------------------------------------------- arrangements

@@ -6,7 +6,7 @@ A room's *grid group* is a floor kind (instances ``student desk-0`` ... ``studen
 a work surface used from one side (:data:`GRID_CATEGORIES`: desks, lab benches, drafting
 tables, workbenches...; a table of :data:`TABLE_CATEGORIES` only when its name says it is a work
 or canteen table, and then it is used from both sides) with at least :data:`MIN_INSTANCES`
-instances, or two when the room's words ask for rows (``in two rows``, ``in a row``, the plan's
+instances, or two when the plan asks for rows (:attr:`holomj.spec.plan.PlanObject.rows`, its
 ``in_row`` relation). Its *seats* are the chairs and stools whose constraints point at exactly
 one of its desks (``school chair-3 | near, student desk-3 | face to, student desk-3``): each desk
 and its seats make a *station*. A desk's +X front is where its user sits, so a station puts its
@@ -21,7 +21,7 @@ can be chosen after the solve). The block becomes one :class:`LayoutObject`, the
 places it with the other furniture (softly in the ``middle`` of the room), then it is split
 back into desks and seats and the layout is checked against every hard rule with their own
 footprints, and the free floor inside the block must all be reachable from the doors. The front
-wall is the side of the solved block that the prompt names (desks facing the window or the
+wall is the side of the solved block that the plan's relations name (desks facing the window or the
 door), else the one away from the room's doors, else the one with a free stretch for the
 board; the station of the first seat takes the front row's middle, so that a whiteboard, a TV
 or a projector screen hung where that seat looks (:func:`front_lookers`) hangs on the front
@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -182,8 +182,8 @@ def _span(seats: Sequence[Piece]) -> float:
 
 @dataclass(frozen=True)
 class GridGroup:
-    """A room's desks of one kind with their seats; ``rows_asked``: the rows the room's words
-    ask for (None: any)."""
+    """A room's desks of one kind with their seats; ``rows_asked``: the rows the plan asks
+    for (None: any)."""
 
     name: str
     category: str
@@ -292,40 +292,6 @@ class Shape:
 
 # --------------------------------------------------------------------------- detection
 
-_NUMBERS = {
-    "a": 1,
-    "one": 1,
-    "single": 1,
-    "two": 2,
-    "three": 3,
-    "four": 4,
-    "five": 5,
-    "six": 6,
-    "seven": 7,
-    "eight": 8,
-    "nine": 9,
-    "ten": 10,
-}
-_ROWS = re.compile(
-    r"\b(?:in|into)\s+(a|one|single|two|three|four|five|six|seven|eight|nine|ten|\d+)\s+rows?\b"
-)
-_ANY_ROWS = re.compile(r"\bin\s+(?:neat\s+|straight\s+)?rows\b|\brows\s+of\b")
-
-
-def rows_asked(texts: Iterable[str]) -> tuple[bool, int | None]:
-    """Whether ``texts`` ask for rows, and how many (``in two rows`` -> 2, ``in rows`` ->
-    None)."""
-    asked = False
-    for text in texts:
-        words = text.lower()
-        match = _ROWS.search(words)
-        if match:
-            token = match.group(1)
-            value = int(token) if token.isdigit() else _NUMBERS[token]
-            return True, max(1, min(value, 20))
-        asked = asked or bool(_ANY_ROWS.search(words))
-    return asked, None
-
 
 def _base(instance: str) -> str:
     head, _, tail = instance.rpartition("-")
@@ -352,13 +318,14 @@ def is_seat(category: str | None, name: str) -> bool:
 def grid_groups(
     problem: RoomProblem,
     categories: Mapping[str, str],
-    relations: Sequence[PlanRelation] = (),
-    request: str = "",
+    plan_room: PlanRoom | None = None,
 ) -> list[GridGroup]:
     """The problem's grid groups (see the module docstring), largest first.
 
-    ``categories``: instance -> library category; ``relations``: the room's plan relations
-    (``in_row`` and its phrase); ``request``: the prompt (``in two rows``)."""
+    ``categories``: instance -> library category; ``plan_room``: the room's plan (the rows its
+    objects are asked in, its ``in_row`` relations)."""
+    relations = plan_room.relations if plan_room is not None else ()
+    rows = {o.name: o.rows for o in plan_room.objects} if plan_room is not None else {}
     sizes = {o.id: problem.object_size_m(o) for o in problem.objects}
     priority = {o.id: o.priority for o in problem.objects}
     kinds: dict[str, list[str]] = {}
@@ -375,9 +342,9 @@ def grid_groups(
             continue
         own = [r for r in relations if r.subject == name]
         in_row = any(r.kind == "in_row" for r in own)
-        texts = [r.phrase for r in own] + _request_near(request, name)
-        asked, count = rows_asked(texts)
-        asked = asked or in_row or count is not None
+        asked_rows = rows.get(name)
+        count = asked_rows if isinstance(asked_rows, int) else None
+        asked = asked_rows is not None or in_row
         if len(instances) < (MIN_INSTANCES_IN_ROWS if asked else MIN_INSTANCES):
             continue
         desks = set(instances)
@@ -420,15 +387,6 @@ def grid_groups(
         )
         taken |= desks | {s for v in seats.values() for s in v}
     return out
-
-
-def _request_near(request: str, name: str) -> list[str]:
-    """The sentences of the request that name the kind (or its last word)."""
-    if not request:
-        return []
-    head = name.split()[-1].lower()
-    stem = head[:-1] if head.endswith("s") else head
-    return [s for s in re.split(r"[.;!?]", request) if stem and stem in s.lower()]
 
 
 def seats_fit(group: GridGroup) -> str | None:
@@ -997,19 +955,18 @@ def solve_desk_grid(
     *,
     solve: Callable[[RoomProblem], LayoutResult],
     plan_room: PlanRoom | None = None,
-    request: str = "",
     defining_priority: int = 100,
     keep_priority: int = 10,
 ) -> tuple[LayoutResult, dict[str, Any] | None]:
     """Lay out ``problem`` with its largest grid group in rows (see the module docstring);
     ``solve`` solves a layout problem (the room's solver), ``categories`` maps instances to
-    library categories, ``plan_room`` gives the room's relations and boards, ``request`` the
-    prompt's words. Returns the layout and the record (None when the room has no grid
+    library categories, ``plan_room`` gives the rows asked, the room's relations and boards.
+    Returns the layout and the record (None when the room has no grid
     group). An object of at least ``defining_priority`` left out makes a shape fail; a shape
     that leaves out an object of at least ``keep_priority`` (one the prompt asked for) stands
     only if independent placement leaves it out as well."""
     relations = plan_room.relations if plan_room is not None else ()
-    groups = grid_groups(problem, categories, relations, request)
+    groups = grid_groups(problem, categories, plan_room)
     if not groups:
         return solve(problem), None
     group = groups[0]

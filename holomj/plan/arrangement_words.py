@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from holomj.layout.counter_runs import ISLAND_CATEGORY, RUN_CATEGORIES
+from holomj.layout.counter_run_arrangements import ISLAND_CATEGORY, RUN_CATEGORIES
 from holomj.spec.plan import CounterRunShape, PlanRoom, RowsAsked
 
 _SHAPE_WORDS: tuple[tuple[CounterRunShape, re.Pattern[str]], ...] = (

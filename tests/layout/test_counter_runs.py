@@ -13,14 +13,14 @@ import pytest
 from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 
-from holomj.layout.counter_runs import (
+from holomj.layout.counter_run_arrangements import (
     FILLER_MAX_M,
     SHAPES,
     RunModule,
     arrangements,
     leg_ends,
-    solve_counter_run,
 )
+from holomj.layout.counter_runs import solve_counter_run
 from holomj.layout.geometry import LAYOUT_MARGIN_M
 from holomj.layout.house_shell import build_shell
 from holomj.layout.room_furnishing import RoomContext, furnish_room, object_id, retrieve_room

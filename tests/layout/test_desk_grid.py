@@ -17,13 +17,9 @@ import pytest
 from shapely.geometry import LineString, Point
 
 from holomj.layout import geometry as geo
-from holomj.layout.desk_grid import (
-    COMPACT,
-    STANDARD,
-    front_lookers,
-    grid_groups,
-    solve_desk_grid,
-)
+from holomj.layout.desk_grid import front_lookers, solve_desk_grid
+from holomj.layout.desk_grid_groups import grid_groups
+from holomj.layout.desk_grid_shapes import COMPACT, STANDARD
 from holomj.layout.open_pockets import reachable_share
 from holomj.layout.room_problem import (
     LayoutDoor,

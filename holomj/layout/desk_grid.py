@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from holomj.layout import geometry as geo
@@ -171,11 +171,23 @@ def board_width(plan_room: PlanRoom | None) -> float | None:
     return max(widths) if widths else None
 
 
-class _Trials:
-    """The shapes tried for a group: each failure noted in the record's ``tried``, and the
-    spare, the laid grid that left the fewest objects out (it may still stand)."""
+class _GridSearch:
+    """The search for a grid of one group: the shapes tried, each failure noted in the
+    record's ``tried``, and the spare, the laid grid that left the fewest objects out (it may
+    still stand)."""
 
-    def __init__(self, record: dict[str, Any]) -> None:
+    def __init__(
+        self,
+        problem: RoomProblem,
+        group: GridGroup,
+        solve: Callable[[RoomProblem], LayoutResult],
+        ctx: GridContext,
+        record: dict[str, Any],
+    ) -> None:
+        self.problem = problem
+        self.group = group
+        self.solve = solve
+        self.ctx = ctx
         self.record = record
         self.spare: tuple[LayoutResult, dict[str, Any]] | None = None
 
@@ -189,6 +201,68 @@ class _Trials:
             outcome = "the layout left out " + ", ".join(outcome["left_out"])
         self.record["tried"].append({"shape": label, "outcome": outcome})
         return False
+
+    def tried(self, parts: Sequence[tuple[Sequence[Station], Shape]], label: str) -> Any:
+        """Solve with ``parts`` as blocks: the layout and the record's fields when the grid is
+        laid with nothing left out, else None (the attempt noted under ``label``)."""
+        result, outcome = _attempt(self.problem, self.group, parts, self.solve, self.ctx)
+        if self.laid(result, outcome, label) and result is not None:
+            return result, outcome
+        return None
+
+    def one_block(self) -> tuple[LayoutResult, Any] | None:
+        """The group laid as one block, in the best ranked shape that lays (at most
+        :data:`MAX_ATTEMPTS` solves), or None."""
+        group, ctx = self.group, self.ctx
+        candidates = candidate_shapes(group, len(group.stations))
+        ranked = rank_shapes(group, candidates, ctx.floor, ctx.others_m2)
+        tried_shapes: set[tuple[int, int, int, str, bool]] = set()
+        attempts = 0
+        for _, shape, _ in ranked:
+            key = (shape.rows, shape.columns, shape.pair, shape.aisles.name, shape.ends)
+            if key in tried_shapes:
+                continue
+            tried_shapes.add(key)
+            attempts += 1
+            laid = self.tried([(group.stations, shape)], shape.label())
+            if laid is not None:
+                return laid
+            if attempts >= MAX_ATTEMPTS:
+                break
+        if not ranked:
+            self.record["tried"].append(
+                {
+                    "shape": "one block",
+                    "outcome": "no shape of one block fits the room's free floor",
+                }
+            )
+        return None
+
+    def two_blocks(self) -> tuple[LayoutResult, Any] | None:
+        """The group laid as two blocks of half the stations each (at most
+        :data:`MAX_TWO_BLOCK_ATTEMPTS` solves), or None (also when it has too few stations)."""
+        group, ctx = self.group, self.ctx
+        n = len(group.stations)
+        if n < 2 * MIN_INSTANCES_IN_ROWS:
+            return None
+        half = math.ceil(n / 2)
+        parts = (group.stations[:half], group.stations[half:])
+        candidates = candidate_shapes(group, half)
+        ranked = rank_shapes(group, candidates, ctx.floor, ctx.others_m2, copies=2)
+        attempts = 0
+        for _, shape, _ in ranked:
+            rest = replace(shape, count=len(parts[1]))
+            if rest.rows > 1 and (rest.rows - 1) * rest.columns >= rest.count:
+                continue
+            attempts += 1
+            laid = self.tried(
+                [(parts[0], shape), (parts[1], rest)], f"two blocks of {shape.label()}"
+            )
+            if laid is not None:
+                return laid
+            if attempts >= MAX_TWO_BLOCK_ATTEMPTS:
+                break
+        return None
 
 
 def solve_desk_grid(
@@ -245,10 +319,8 @@ def solve_desk_grid(
         FreeFloor(prep, tall),
         others,
     )
-    trials = _Trials(record)
-    laid = _one_block(problem, group, solve, ctx, trials) or _two_blocks(
-        problem, group, solve, ctx, trials
-    )
+    trials = _GridSearch(problem, group, solve, ctx, record)
+    laid = trials.one_block() or trials.two_blocks()
     if laid is not None:
         return laid[0], _finish(record, laid[1])
     alone = solve(problem)
@@ -262,78 +334,6 @@ def solve_desk_grid(
         or "no grid fits the room"
     ) + "; the desks are laid out one by one"
     return alone, record
-
-
-def _one_block(
-    problem: RoomProblem,
-    group: GridGroup,
-    solve: Callable[[RoomProblem], LayoutResult],
-    ctx: GridContext,
-    trials: _Trials,
-) -> tuple[LayoutResult, Any] | None:
-    """The group laid as one block, in the best ranked shape that lays (at most
-    :data:`MAX_ATTEMPTS` solves), or None."""
-    ranked = rank_shapes(
-        group, candidate_shapes(group, len(group.stations)), ctx.floor, ctx.others_m2
-    )
-    tried_shapes: set[tuple[int, int, int, str, bool]] = set()
-    attempts = 0
-    for _, shape, _ in ranked:
-        key = (shape.rows, shape.columns, shape.pair, shape.aisles.name, shape.ends)
-        if key in tried_shapes:
-            continue
-        tried_shapes.add(key)
-        attempts += 1
-        result, outcome = _attempt(problem, group, [(group.stations, shape)], solve, ctx)
-        if trials.laid(result, outcome, shape.label()) and result is not None:
-            return result, outcome
-        if attempts >= MAX_ATTEMPTS:
-            break
-    if not ranked:
-        trials.record["tried"].append(
-            {"shape": "one block", "outcome": "no shape of one block fits the room's free floor"}
-        )
-    return None
-
-
-def _two_blocks(
-    problem: RoomProblem,
-    group: GridGroup,
-    solve: Callable[[RoomProblem], LayoutResult],
-    ctx: GridContext,
-    trials: _Trials,
-) -> tuple[LayoutResult, Any] | None:
-    """The group laid as two blocks of half the stations each (at most
-    :data:`MAX_TWO_BLOCK_ATTEMPTS` solves), or None (also when it has too few stations)."""
-    n = len(group.stations)
-    if n < 2 * MIN_INSTANCES_IN_ROWS:
-        return None
-    half = math.ceil(n / 2)
-    parts = (group.stations[:half], group.stations[half:])
-    candidates = candidate_shapes(group, half)
-    ranked = rank_shapes(group, candidates, ctx.floor, ctx.others_m2, copies=2)
-    attempts = 0
-    for _, shape, _ in ranked:
-        rest = Shape(
-            len(parts[1]),
-            shape.rows,
-            shape.columns,
-            shape.pair,
-            shape.aisles,
-            shape.symmetric,
-            shape.ends,
-        )
-        if rest.rows > 1 and (rest.rows - 1) * rest.columns >= rest.count:
-            continue
-        attempts += 1
-        result, outcome = _attempt(
-            problem, group, [(parts[0], shape), (parts[1], rest)], solve, ctx
-        )
-        if trials.laid(result, outcome, f"two blocks of {shape.label()}") and result is not None:
-            return result, outcome
-        if attempts >= MAX_TWO_BLOCK_ATTEMPTS:
-            break
-    return None
 
 
 def _finish(record: dict[str, Any], fields: Mapping[str, Any]) -> dict[str, Any]:

@@ -18,7 +18,7 @@ from pydantic import Field, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
 
-PLAN_SCHEMA_VERSION = "1.0"
+PLAN_SCHEMA_VERSION: Literal["1.0"] = "1.0"
 
 # Names of plan objects: Holodeck-like ("dining chair"), no '|' or ',' (they separate fields of
 # the constraint text form) and no trailing "-<n>" (that is an instance suffix).

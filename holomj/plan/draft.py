@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from holomj.plan.knowledge import KnowledgeBase, ObjectKind, RoomTemplate
+from holomj.plan.knowledge_schema import KnowledgeBase, ObjectKind, RoomTemplate
 from holomj.plan.prompt import ParsedPrompt
 from holomj.retrieval.text import TextEncoder
 from holomj.spec.plan import PlanRelation

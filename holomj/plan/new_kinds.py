@@ -26,7 +26,7 @@ import re
 import numpy as np
 
 from holomj.plan.draft import DraftPlan
-from holomj.plan.knowledge import ObjectKind
+from holomj.plan.knowledge_schema import ObjectKind
 from holomj.plan.prompt_relations import RELATIONS
 from holomj.plan.scene_match import OBJECT_MATCH_MIN, nearest_objects
 

@@ -31,7 +31,7 @@ from typing import Literal
 
 from pydantic import Field
 
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.prompt_clauses import (
     find_refinements,
     first_size_word,

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.prompt_words import plural_forms, tokenize
 
 

@@ -10,7 +10,7 @@ explicit requests, style words or the templates' lists.
 from __future__ import annotations
 
 from holomj.plan.draft import DraftPlan, DraftRoom
-from holomj.plan.knowledge import RoomTemplate, SceneType
+from holomj.plan.knowledge_schema import RoomTemplate, SceneType
 from holomj.plan.prompt import RoomMention
 
 WALL_HEIGHT_LIMITS = (2.4, 4.0)

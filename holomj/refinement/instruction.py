@@ -33,7 +33,8 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from holomj.evaluation.vocabulary import Vocabulary
-from holomj.plan.knowledge import KnowledgeBase, knowledge_base
+from holomj.plan.knowledge import knowledge_base
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.new_kinds import kind_name
 from holomj.plan.prompt import ObjectRequest, ParsedPrompt, parse_prompt
 from holomj.refinement.summary import ObjectInfo, RoomInfo, SceneSummary

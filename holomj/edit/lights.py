@@ -12,17 +12,12 @@ from __future__ import annotations
 
 from typing import Any
 
+from holomj.edit.choice import retrieve
 from holomj.edit.describe import describe
 from holomj.edit.floor import room_at
-from holomj.edit.objects import (
-    add,
-    ceiling_spot,
-    kind_of,
-    new_id,
-    replace,
-    retrieve,
-    room_of,
-)
+from holomj.edit.lookup import kind_of, new_id, room_of
+from holomj.edit.objects import add, replace
+from holomj.edit.placing import ceiling_spot
 from holomj.edit.state import Change, EditContext, Refused, find, rebuilt, with_objects
 from holomj.spec.decor import LIGHT_BELOW_FIXTURE_M, LIGHT_FIXTURE_CATEGORIES
 from holomj.spec.edit import AddOp, EditRelation, LightOp, ReplaceOp

@@ -36,7 +36,7 @@ from typing import Any, TypeVar
 from holomj.errors import HolomjError
 from holomj.plan.llm_client import ChatClient, LLMTransportError
 from holomj.plan.llm_config import LLMConfig
-from holomj.plan.llm_parse import LLMResponseError
+from holomj.plan.llm_json import LLMResponseError
 from holomj.refinement.instruction import Instruction
 from holomj.refinement.safety import (
     MAX_OPS_PER_ROUND,

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 from shapely.geometry import Point
 
-from holomj.plan.llm_parse import LLMResponseError, extract_json_object
+from holomj.plan.llm_json import LLMResponseError, extract_json_object
 from holomj.refinement.safety import looks_like_code
 
 MAX_NAME_CHARS = 80

@@ -14,7 +14,7 @@ from typing import Any
 
 from holomj.edit.choice import retrieve
 from holomj.edit.describe import describe
-from holomj.edit.floor import room_at
+from holomj.edit.footprints import room_at
 from holomj.edit.lookup import kind_of, new_id, room_of
 from holomj.edit.objects import add, replace
 from holomj.edit.placing import ceiling_spot

@@ -5,10 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from holomj.edit.floor import (
-    FLOOR_Z_M,
-    room_at,
-)
+from holomj.edit.footprints import FLOOR_Z_M, room_at
 from holomj.edit.state import (
     Refused,
     find,

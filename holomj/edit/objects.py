@@ -18,12 +18,8 @@ from typing import Any
 
 from holomj.edit.choice import choose_asset
 from holomj.edit.describe import describe
-from holomj.edit.floor import (
-    RoomFloor,
-    object_size,
-    object_yaw,
-    room_at,
-)
+from holomj.edit.floor import RoomFloor
+from holomj.edit.footprints import object_size, object_yaw, room_at
 from holomj.edit.lookup import floor_ids, kind_of, new_id, pick_room, room_of
 from holomj.edit.placing import ceiling_spot, hang_from_ceiling, hang_on_wall, place_on_floor
 from holomj.edit.small import drop

@@ -9,16 +9,8 @@ from collections.abc import Sequence
 import numpy as np
 from shapely.geometry import Polygon
 
-from holomj.edit.floor import (
-    Blocker,
-    RoomFloor,
-    Wish,
-    footprint,
-    in_room,
-    object_size,
-    object_yaw,
-    room_at,
-)
+from holomj.edit.floor import Blocker, RoomFloor, Wish
+from holomj.edit.footprints import footprint, in_room, object_size, object_yaw, room_at
 from holomj.edit.lookup import room_of
 from holomj.edit.state import (
     EditContext,

@@ -7,10 +7,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from holomj.edit.describe import Described
-from holomj.edit.floor import (
-    Wish,
-    in_room,
-)
+from holomj.edit.floor import Wish
+from holomj.edit.footprints import in_room
 from holomj.edit.lookup import category_of, room_of
 from holomj.edit.state import (
     Refused,

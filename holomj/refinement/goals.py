@@ -36,7 +36,7 @@ import re
 from typing import Any
 
 from holomj.evaluation.plan_spec import RELATION_MAP
-from holomj.refinement.instruction import Instruction, Item
+from holomj.refinement.instruction_items import Instruction, Item
 from holomj.refinement.summary import SceneSummary
 
 TOLERANCE = 1e-9

@@ -26,7 +26,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
-from holomj.refinement.instruction import Instruction, Item
+from holomj.refinement.instruction_items import Instruction, Item
 from holomj.refinement.safety import MAX_OPS_PER_ROUND, next_id
 from holomj.refinement.summary import SceneSummary
 

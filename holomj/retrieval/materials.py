@@ -38,11 +38,11 @@ from holomj.retrieval.text import TextEncoder
 from holomj.spec.base import FrozenModel, Identifier, read_json, validate_model
 from holomj.spec.materials import BUILTIN_MATERIALS, Material
 
-SURFACES = ("floor", "wall", "ceiling")
-MATERIALS_SCHEMA_VERSION = "1.0"
+MATERIALS_SCHEMA_VERSION: Literal["1.0"] = "1.0"
 MAX_TEXTURE_PX = 1024
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg")
 Surface = Literal["floor", "wall", "ceiling"]
+SURFACES: tuple[Surface, ...] = ("floor", "wall", "ceiling")
 
 
 class UserMaterial(FrozenModel):
@@ -261,10 +261,10 @@ def is_auxiliary_map(stem: str) -> bool:
     return any(token in MAP_TOKENS for token in re.findall(r"[a-z0-9]+", stem.lower()))
 
 
-def guess_surfaces(words: Sequence[str]) -> list[str]:
+def guess_surfaces(words: Sequence[str]) -> list[Surface]:
     """Surfaces a texture suits, from its words; all three when they say nothing."""
     found = set(words)
-    surfaces = set()
+    surfaces: set[Surface] = set()
     if found & FLOOR_WORDS:
         surfaces.add("floor")
     if found & WALL_WORDS:
@@ -335,6 +335,23 @@ def import_textures(
     """
     folder = Path(folder)
     target = Path(root) if root is not None else default_materials_root()
+    images, skipped = _texture_images(folder, surface, texture_size_m)
+    index = read_index(target)
+    prepared = _prepared_materials(images, surface, texture_size_m)
+    replaced = sorted(n for n, _, _ in prepared if n in index.materials)
+    merged = dict(index.materials)
+    merged.update({name: item for name, item, _ in prepared})
+    _write_materials(target, prepared, MaterialIndex(materials=dict(sorted(merged.items()))))
+    library = MaterialLibrary.load(target)
+    added = [library.get(name) for name, _, _ in prepared]
+    return TextureImport(target, added, replaced, skipped)
+
+
+def _texture_images(
+    folder: Path, surface: str | None, texture_size_m: float
+) -> tuple[list[Path], list[tuple[str, str]]]:
+    """The colour textures of ``folder`` and the images skipped (with why); bad options or a
+    folder without colour textures are refused."""
     if surface is not None and surface not in (*SURFACES, "any"):
         raise InputError(
             f"unknown surface {surface!r}", where="--surface", fix="use floor, wall, ceiling or any"
@@ -357,21 +374,28 @@ def import_textures(
             where=str(folder),
             fix="point at a folder of .png/.jpg textures",
         )
-    index = read_index(target)
+    return images, skipped
+
+
+def _prepared_materials(
+    images: list[Path], surface: str | None, texture_size_m: float
+) -> list[tuple[str, UserMaterial, bytes]]:
+    """(name, index entry, PNG bytes) of each texture image, every image read."""
     taken: set[str] = set()
     prepared: list[tuple[str, UserMaterial, bytes]] = []
     for path in images:
         words = texture_words(path.stem) or [re.sub(r"[^a-z0-9]+", "_", path.stem.lower())]
         name = _unique_name("_".join(words), taken)
         taken.add(name)
+        surfaces: list[Surface]
         if surface is None:
             surfaces = guess_surfaces(words)
         else:
-            surfaces = list(SURFACES) if surface == "any" else [surface]
+            surfaces = list(SURFACES) if surface == "any" else [s for s in SURFACES if s == surface]
         specular, shininess = _specular(words)
         item = UserMaterial(
             description=" ".join(words),
-            surfaces=surfaces,  # type: ignore[arg-type]
+            surfaces=surfaces,
             material=Material(
                 rgba=(1.0, 1.0, 1.0, 1.0),
                 texture=f"{name}.png",
@@ -382,10 +406,13 @@ def import_textures(
             source=path.name,
         )
         prepared.append((name, item, _png_bytes(path)))
-    replaced = sorted(n for n, _, _ in prepared if n in index.materials)
-    merged = dict(index.materials)
-    merged.update({name: item for name, item, _ in prepared})
-    new_index = MaterialIndex(materials=dict(sorted(merged.items())))
+    return prepared
+
+
+def _write_materials(
+    target: Path, prepared: list[tuple[str, UserMaterial, bytes]], index: MaterialIndex
+) -> None:
+    """The materials folder with the new textures and ``index``, replaced atomically."""
 
     def fill(tmp: Path) -> None:
         if target.is_dir():
@@ -394,7 +421,7 @@ def import_textures(
                     shutil.copy2(old, tmp / old.name)
         for name, _, data in prepared:
             (tmp / f"{name}.png").write_bytes(data)
-        text = json.dumps(new_index.model_dump(mode="json"), indent=2, sort_keys=True) + "\n"
+        text = json.dumps(index.model_dump(mode="json"), indent=2, sort_keys=True) + "\n"
         (tmp / MATERIALS_INDEX).write_text(text, encoding="utf-8")
 
     try:
@@ -403,9 +430,6 @@ def import_textures(
         raise InputError(
             f"cannot write the materials folder: {err.strerror or err}", where=str(target)
         ) from None
-    library = MaterialLibrary.load(target)
-    added = [library.get(name) for name, _, _ in prepared]
-    return TextureImport(target, added, replaced, skipped)
 
 
 def _unique_name(name: str, taken: set[str]) -> str:

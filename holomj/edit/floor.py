@@ -183,8 +183,8 @@ class RoomFloor:
             target = alias.get(wish.target) if wish.target is not None else None
             constraints.append(
                 Constraint(
-                    object=NEW, kind=wish.kind, target=target, weight=wish.weight,  # type: ignore[arg-type]
-                    source=wish.source or None,
+                    object=NEW, target=target, weight=wish.weight, source=wish.source or None,
+                    kind=wish.kind,  # type: ignore[arg-type]  # str from the tables; pydantic checks it
                 )
             )  # fmt: skip
         problem = RoomProblem(

@@ -56,7 +56,7 @@ def _change_light(scene: SceneSpec, op: LightOp, source: Light) -> Change:
         raise Refused("nothing to change: give position, energy, color or kind")
     lights = [li.model_copy(update=update) if li.id == source.id else li for li in scene.lights]
     new_scene = rebuilt(scene, lights=lights)
-    return Change(new_scene, changed=[op.id], details={"light": op.id, **update})
+    return Change(new_scene, changed=[source.id], details={"light": source.id, **update})
 
 
 def _change_fixture(scene: SceneSpec, op: LightOp, ctx: EditContext, index: int) -> Change:

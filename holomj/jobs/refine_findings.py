@@ -12,6 +12,7 @@ Each finding is ``{"metric", "object", "reason"}``; pockets smaller than
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -67,7 +68,7 @@ def fences(folder: str) -> list[dict[str, Any]]:
     from holomj.evaluation.folder import Scene
     from holomj.evaluation.reachability import robot_reach
 
-    scene = Scene(folder)
+    scene = Scene(Path(folder))
     grid = robot_reach(scene)
     if grid is None or not grid.entrance_found:
         return []

@@ -134,9 +134,9 @@ def _check_objects(kb: KnowledgeBase) -> None:
                     raise _unknown(target, floor, "floor object", f"{where}.constraints[{i}]")
             _check_lines([line], [name, *_targets(line)], f"{where}.constraints[{i}]")
     for name, generic in kb.generics.items():
-        for kind in generic.kinds:
-            if kind not in kb.objects:
-                raise _unknown(kind, kb.objects, "object kind", f"objects.json: generics.{name}")
+        for member in generic.kinds:
+            if member not in kb.objects:
+                raise _unknown(member, kb.objects, "object kind", f"objects.json: generics.{name}")
     for name in kb.refused:
         if name in kb.objects:
             raise SpecError(

@@ -78,7 +78,7 @@ def _clean_text(text: str, limit: int) -> str:
 
 def _room_ref(text: str, room_ids: Sequence[str], what: str) -> str:
     key = normalise_room_id(text)
-    if key in room_ids:
+    if key is not None and key in room_ids:
         return key
     raise LLMResponseError(f"{what}: unknown room {text!r} (rooms: {', '.join(room_ids)})")
 
@@ -321,7 +321,8 @@ def _size_m(
         notes.append(
             f"{label}: size {shown} cm clamped to {' x '.join(f'{v:g}' for v in clamped)} cm"
         )
-    return tuple(round(v / 100.0, 3) for v in clamped)  # type: ignore[return-value]
+    width, depth, height = (round(v / 100.0, 3) for v in clamped)
+    return (width, depth, height)
 
 
 def _quantity(value: int, limit: int, notes: list[str], label: str) -> int:

@@ -185,12 +185,11 @@ def parse_pixel(content: str, width: int, height: int) -> tuple[int, int]:
     """The pixel of an answer ``{"pixel": [u, v]}``, inside the image."""
     data = extract_json_object(content)
     pixel = data.get("pixel")
-    ok = (
-        isinstance(pixel, list)
-        and len(pixel) == 2
-        and all(isinstance(p, (int, float)) and not isinstance(p, bool) for p in pixel)
-    )
-    if not ok:
+    if (
+        not isinstance(pixel, list)
+        or len(pixel) != 2
+        or not all(isinstance(p, (int, float)) and not isinstance(p, bool) for p in pixel)
+    ):
         raise LLMResponseError('expected {"pixel": [u, v]} with two numbers')
     u, v = (float(p) for p in pixel)
     if not (math.isfinite(u) and math.isfinite(v)):

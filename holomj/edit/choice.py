@@ -1,5 +1,5 @@
-"""The asset an ``add`` or ``replace`` gets: retrieval for the described object, its size
-checked, and the pick's record for the edit report."""
+"""The asset an added, replaced or light-fixture object gets: retrieval for the described object,
+its size checked, and the pick's record for the edit report."""
 
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ from holomj.errors import HolomjError
 from holomj.spec.assets import AssetMeta
 
 
-def retrieve(
+def choose_asset(
     ctx: EditContext,
     asked: Described,
     *,
@@ -25,8 +25,10 @@ def retrieve(
     size: tuple[float, float, float] | None,
     placement: str,
     key: tuple[object, ...],
-) -> tuple[str, dict[str, Any]]:
-    """One asset for the described object: its id and the pick's record."""
+    refuse_absurd: bool = True,
+) -> tuple[str, AssetMeta, dict[str, Any]]:
+    """One asset for the described object: its id, its metadata and the pick's record; with
+    ``refuse_absurd``, an asset of an absurd size is refused."""
     text = " ".join([asked.description, *attributes])
     try:
         pick = ctx.retriever.choose(
@@ -45,25 +47,7 @@ def retrieve(
         value = getattr(pick, name, None)
         if value is not None:
             record[name] = round(value, 4) if isinstance(value, float) else value
-    return pick.asset_id, record
-
-
-def choose_asset(
-    ctx: EditContext,
-    asked: Described,
-    *,
-    attributes: Sequence[str],
-    category: str | None,
-    size: tuple[float, float, float] | None,
-    placement: str,
-    key: tuple[object, ...],
-) -> tuple[str, AssetMeta, dict[str, Any]]:
-    """:func:`retrieve`, with the chosen asset's metadata, its size checked (an absurd size is
-    refused)."""
-    asset_id, pick = retrieve(
-        ctx, asked, attributes=attributes, category=category, size=size,
-        placement=placement, key=key,
-    )  # fmt: skip
-    meta = ctx.library.get(asset_id).meta
-    check_size(meta.size, f"asset {asset_id}")
-    return asset_id, meta, pick
+    meta = ctx.library.get(pick.asset_id).meta
+    if refuse_absurd:
+        check_size(meta.size, f"asset {pick.asset_id}")
+    return pick.asset_id, meta, record

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from holomj.edit.choice import retrieve
+from holomj.edit.choice import choose_asset
 from holomj.edit.describe import describe
 from holomj.edit.footprints import room_at
 from holomj.edit.lookup import kind_of, new_id, room_of
@@ -128,11 +128,10 @@ def _add_fixture(scene: SceneSpec, op: LightOp, ctx: EditContext, index: int) ->
             index,
         )  # fmt: skip
     oid = new_id(scene, room_id, asked.name, None)
-    asset_id, pick = retrieve(
+    asset_id, meta, pick = choose_asset(
         ctx, asked, attributes=[], category=asked.category, size=asked.size,
-        placement="ceiling", key=("light", index),
+        placement="ceiling", key=("light", index), refuse_absurd=False,
     )  # fmt: skip
-    meta = ctx.library.get(asset_id).meta
     x, y, z = ceiling_spot(scene, room_id, meta.size, ctx.library, at=op.position, above=op.above)
     obj = SceneObject(id=oid, asset=asset_id, position=(x, y, z), static=True, room=room_id)
     objects = [*scene.objects, obj]

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from holomj.edit.choice import choose_asset
-from holomj.edit.describe import describe
+from holomj.edit.describe import Described, describe
 from holomj.edit.floor import RoomFloor
 from holomj.edit.footprints import object_size, object_yaw, room_at
 from holomj.edit.lookup import floor_ids, kind_of, new_id, pick_room, room_of
@@ -34,6 +34,7 @@ from holomj.edit.state import (
 )
 from holomj.edit.wishes import default_wishes, described_wishes, wishes_of
 from holomj.layout.room_furnishing import FIXED_CATEGORIES
+from holomj.spec.assets import AssetMeta
 from holomj.spec.edit import AddOp, MoveOp, RemoveOp, ReplaceOp
 from holomj.spec.scene import SceneObject, SceneSpec
 
@@ -66,15 +67,7 @@ def add(scene: SceneSpec, op: AddOp, ctx: EditContext, index: int) -> Change:
     wishes += more
     above = next((r.target for r in op.relations if r.kind == "above"), above)
     oid = new_id(scene, room_id, asked.name, op.id)
-    asset_id, meta, pick = choose_asset(
-        ctx,
-        asked,
-        attributes=op.attributes,
-        category=op.category or asked.category,
-        size=size,
-        placement=placement,
-        key=("add", index),
-    )
+    asset_id, meta, pick = _asset_for(ctx, asked, op, size, placement, ("add", index))
     details: dict[str, Any] = {"room": room_id, "name": asked.name, "placement": placement, **pick}
     if placement == "floor":
         if not wishes and op.position is None:
@@ -242,15 +235,7 @@ def replace(scene: SceneSpec, op: ReplaceOp, ctx: EditContext, index: int) -> Ch
     room_id = room_of(scene, obj)
     asked = describe(op.description, scene.room(room_id).type, ctx.seed)
     size = op.size or asked.size
-    asset_id, meta, pick = choose_asset(
-        ctx,
-        asked,
-        attributes=op.attributes,
-        category=op.category or asked.category,
-        size=size,
-        placement=kind,
-        key=("replace", index),
-    )
+    asset_id, meta, pick = _asset_for(ctx, asked, op, size, kind, ("replace", index))
     depth, width, height = meta.size
     x, y, z = obj.position
     yaw = object_yaw(obj)
@@ -324,3 +309,23 @@ def _drop_again(
     if lost:
         change.removed.extend(lost)
         change.notes.append(f"removed (no place on the new {holder}): {', '.join(lost)}")
+
+
+def _asset_for(
+    ctx: EditContext,
+    asked: Described,
+    op: AddOp | ReplaceOp,
+    size: tuple[float, float, float] | None,
+    placement: str,
+    key: tuple[object, ...],
+) -> tuple[str, AssetMeta, dict[str, Any]]:
+    """The asset an ``add`` or ``replace`` asks for (its attributes and category hint)."""
+    return choose_asset(
+        ctx,
+        asked,
+        attributes=op.attributes,
+        category=op.category or asked.category,
+        size=size,
+        placement=placement,
+        key=key,
+    )

@@ -9,16 +9,19 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from holomj.evaluation.report import EvalReport
+from holomj.refinement.finding import Finding
+
 
 @dataclass
 class Measure:
     """One scene measured: the eval report, the instruction's checks, the refine score, the
     findings to fix, whether it validates, and the seconds it took."""
 
-    report: Any
+    report: EvalReport
     checks: list[dict[str, Any]]
     score: dict[str, Any]
-    findings: list[dict[str, Any]]
+    findings: list[Finding]
     valid: bool
     seconds: float
 
@@ -28,7 +31,7 @@ class Measure:
             **self.score,
             "valid": self.valid,
             "checks": self.checks,
-            "findings": self.findings,
+            "findings": [f.to_json() for f in self.findings],
             "seconds": round(self.seconds, 3),
         }
 

@@ -251,7 +251,7 @@ class RefineRun:
         from holomj.refinement.llm import propose as ask_model
 
         problems = [f"{metric}: {what}" for metric, what in before.report.problems()]
-        problems += [f"{f['metric']}: {f['object']} {f['reason']}" for f in before.findings]
+        problems += [finding.line() for finding in before.findings]
         feedback, self.feedback = self.feedback, []
         answer = ask_model(
             self.chat,
@@ -278,7 +278,7 @@ class RefineRun:
     def _rooms(self, before: Measure) -> list[str]:
         rooms = list(self.context.instruction.rooms)
         for finding in before.findings:
-            obj = self.summary.object(finding["object"])
+            obj = self.summary.object(finding.object)
             if obj is not None and obj.room and obj.room not in rooms:
                 rooms.append(obj.room)
         return rooms or [r.id for r in self.summary.rooms]

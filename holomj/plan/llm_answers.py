@@ -3,26 +3,9 @@ words lower-cased, counts bounded)."""
 
 from __future__ import annotations
 
-import re
 from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
-
-ROOM_SIDE_M = (2.5, 8.0)
-WALL_HEIGHT_M = (2.4, 4.5)
-MAX_OBJECTS_PER_ROOM = 40
-MAX_QUANTITY = 20
-MAX_ON_TOP = 10
-MAX_ON_TOP_QUANTITY = 10
-# Sane (width, depth, height) ranges in centimetres, by placement.
-# Heights are also capped at the wall height when the caller knows it.
-SIZE_RANGE_CM: dict[str, tuple[tuple[float, float], ...]] = {
-    "floor": ((10.0, 500.0), (10.0, 500.0), (1.0, 350.0)),
-    "wall": ((5.0, 500.0), (1.0, 100.0), (2.0, 350.0)),
-}
-
-_INSTANCE_SUFFIX = re.compile(r"-\s*\d+$")
-
 
 MAX_ROOMS = 12
 

@@ -21,22 +21,6 @@ from pydantic import BaseModel, ValidationError
 from holomj.errors import HolomjError
 from holomj.spec.base import field_path
 
-ROOM_SIDE_M = (2.5, 8.0)
-WALL_HEIGHT_M = (2.4, 4.5)
-MAX_OBJECTS_PER_ROOM = 40
-MAX_QUANTITY = 20
-MAX_ON_TOP = 10
-MAX_ON_TOP_QUANTITY = 10
-# Sane (width, depth, height) ranges in centimetres, by placement.
-# Heights are also capped at the wall height when the caller knows it.
-SIZE_RANGE_CM: dict[str, tuple[tuple[float, float], ...]] = {
-    "floor": ((10.0, 500.0), (10.0, 500.0), (1.0, 350.0)),
-    "wall": ((5.0, 500.0), (1.0, 100.0), (2.0, 350.0)),
-}
-
-_INSTANCE_SUFFIX = re.compile(r"-\s*\d+$")
-
-
 MAX_ANSWER_CHARS = 200_000
 
 

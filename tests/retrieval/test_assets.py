@@ -12,7 +12,8 @@ import pytest
 
 from holomj.errors import InputError
 from holomj.library import AssetLibrary
-from holomj.retrieval.assets import NO_CLIP_NOTE, AssetRetriever, retriever_for
+from holomj.retrieval.assets import AssetRetriever, retriever_for
+from holomj.retrieval.ranking import NO_CLIP_NOTE
 from holomj.retrieval.scores import SIZE_CAP_M, RetrievalWeights, size_discrepancy
 from tests.retrieval.conftest import AssetSpec
 

@@ -29,13 +29,14 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from typing_extensions import Unpack
 
 from holomj.errors import InputError
 from holomj.library.store import (
     AssetLibrary,
     normalise_category,
 )
-from holomj.retrieval.ranking import AssetRanker
+from holomj.retrieval.ranking import AssetRanker, RankerOptions
 from holomj.retrieval.scores import (
     DEFAULT_WEIGHTS,
     RetrievalWeights,
@@ -45,7 +46,7 @@ from holomj.retrieval.scores import (
     size_discrepancy,
 )
 from holomj.retrieval.text import TextEncoder
-from holomj.retrieval.visual import VisualScorer, visual_scorer_from_env
+from holomj.retrieval.visual import visual_scorer_from_env
 
 SIMILARITY_FLOOR = 0.8
 """Least text cosine between two category names for one to stand in for the other (with the
@@ -63,15 +64,9 @@ class AssetRetriever(AssetRanker):
     ``synthesiser`` (see the module docstring)."""
 
     def __init__(
-        self,
-        library: AssetLibrary,
-        *,
-        encoder: TextEncoder | None = None,
-        visual: VisualScorer | None = None,
-        weights: RetrievalWeights = DEFAULT_WEIGHTS,
-        synthesiser: Any = None,
+        self, library: AssetLibrary, *, synthesiser: Any = None, **options: Unpack[RankerOptions]
     ) -> None:
-        super().__init__(library, encoder=encoder, visual=visual, weights=weights)
+        super().__init__(library, **options)
         self.synthesiser = synthesiser
         self._recorded: dict[int, dict[str, str]] = {}
 

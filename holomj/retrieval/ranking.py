@@ -27,6 +27,8 @@ Embeddings of asset texts and thumbnails are cached in ``LIB/.cache/retrieval/``
 
 from __future__ import annotations
 
+from typing import TypedDict
+
 import numpy as np
 
 from holomj.errors import InputError
@@ -60,6 +62,14 @@ NO_CLIP_NOTE = (
     "CLIP weights not configured: the visual term V is left out and its weight goes to the "
     "text term T (set HOLOMJ_CLIP_WEIGHTS to a local open_clip checkpoint to use V)"
 )
+
+
+class RankerOptions(TypedDict, total=False):
+    """The options of :class:`AssetRanker` (and of the retrievers built on it)."""
+
+    encoder: TextEncoder | None
+    visual: VisualScorer | None
+    weights: RetrievalWeights
 
 
 class AssetRanker:

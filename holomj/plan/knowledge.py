@@ -1,7 +1,8 @@
 """The offline planner's knowledge base: scene types, room templates, objects, styles, materials.
 
-The knowledge is data, in ``holomj/data/knowledge/*.json``; this module only defines its schema,
-loads it and checks that its parts agree:
+The knowledge is data, in ``holomj/data/knowledge/*.json``; this module loads it, its schema is
+:mod:`holomj.plan.knowledge_schema` and the checks that its parts agree
+:mod:`holomj.plan.knowledge_checks`:
 
 * ``objects.json``: object kinds (plan names such as ``"dining chair"``) with a category (the
   default library's, else a new one equal to the kind's name in snake_case), a size (width,

@@ -72,6 +72,14 @@ def compile_command(
             '"valid": false in import_report.json).',
         ),
     ] = False,
+    strict: Annotated[
+        bool,
+        typer.Option(
+            "--strict",
+            help="Refuse the house (exit 1, nothing written) when any object would be left "
+            "out; by default what cannot stand anywhere is left out and listed.",
+        ),
+    ] = False,
     as_json: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
@@ -93,6 +101,7 @@ def compile_command(
                 seed=seed,
                 fix=fix,
                 allow_invalid=allow_invalid,
+                strict=strict,
             )
         )
     if as_json:
@@ -134,6 +143,7 @@ def _print_stand(stand: dict) -> None:
         f"{before['count']} (max {before['max_m'] * 1000:.0f} mm) -> {after['count']} "
         f"(max {after['max_m'] * 1000:.1f} mm)"
     )
+    _print_kept(stand)
     validation = stand.get("validation")
     if stand["valid"]:
         out_console.print(
@@ -147,3 +157,20 @@ def _print_stand(stand: dict) -> None:
     )
     for row in unsaved[:8]:
         out_console.print(f"    {row['object']}: {row['why']}", markup=False)
+
+
+def _print_kept(stand: dict) -> None:
+    """The objects moved to another receptacle or left out, and the share kept."""
+    relocated, left = stand.get("relocated", []), stand.get("left_out", [])
+    if not relocated and not left:
+        return
+    out_console.print(
+        f"  kept {stand['objects_kept']}/{stand['objects_imported']} objects "
+        f"({stand['kept_share']:.1%}): {len(relocated)} moved to another receptacle, "
+        f"{len(left)} left out (see import_report.json)"
+    )
+    for row in (relocated + left)[:8]:
+        to = row["to"]["support"] if row["to"] else "left out"
+        out_console.print(
+            f"    {row['object']}: {row['from']['support']} -> {to}: {row['why']}", markup=False
+        )

@@ -105,6 +105,14 @@ def fit_scale(asset_size: Size, target: Size) -> tuple[float, float, float] | No
     return scale
 
 
+def clamped_scale(scale: tuple[float, float, float]) -> tuple[float, float, float]:
+    """The factors nearest to ``scale`` within the limits (each axis in ``[SCALE_MIN,
+    SCALE_MAX]``, the largest at most ``MAX_ASPECT_CHANGE`` times the smallest)."""
+    clamped = [min(max(f, SCALE_MIN), SCALE_MAX) for f in scale]
+    low = min(clamped)
+    return tuple(round(min(f, low * MAX_ASPECT_CHANGE), 4) for f in clamped)  # type: ignore[return-value]
+
+
 def _may_turn(asset: LibraryAsset) -> bool:
     """Small props may stand in turned by 90°; furniture keeps its front where the source has it."""
     placement = set(asset.meta.placement)
@@ -154,13 +162,17 @@ def choose_asset(
     stand_ins: tuple[str, ...] = (),
     size_source: str | None = None,
     prefer_articulated: bool = False,
+    nearest_when_none_fits: bool = False,
 ) -> tuple[AssetChoice, str | None]:
     """Pick the asset for an object; also returns a warning when the size had to be guessed.
 
     ``fit``: scale a stand-in to ``size`` (see the module notes); ``stand_ins``: further
     categories to try after the category and its aliases; ``size_source``: where ``size`` came
     from, for the substitution record; ``prefer_articulated``: the original opens, so an
-    articulated asset of any of the categories goes first (see the module notes).
+    articulated asset of any of the categories goes first (see the module notes);
+    ``nearest_when_none_fits``: when no asset of the categories fits within the scale limits,
+    the closest one is scaled as far towards ``size`` as the limits allow (an object of its
+    own kind a little off its size rather than a box of it).
     """
     if requested and requested in library:
         return AssetChoice(requested, 1.0, library.get(requested).meta.size[2], None), None
@@ -243,6 +255,16 @@ def choose_asset(
         found = search(articulated_only)
         if found is not None:
             return found, warning
+    if missed is not None and nearest_when_none_fits:
+        asset = library.get(missed[1])
+        scale = clamped_scale(missed[2])
+        reason = (
+            f"not in library; no asset of category {category!r} fits within the scale limits: "
+            f"closest {missed[1]!r} scaled by the nearest allowed factors"
+        )
+        used = compact_scale(scale)
+        height = round(asset.meta.size[2] * scale[2], 9)
+        return AssetChoice(missed[1], used, height, substitution(missed[1], reason, used)), warning
     if missed is not None:
         factors = ", ".join(f"{s:g}" for s in missed[2])
         reason = (

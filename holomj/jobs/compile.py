@@ -10,9 +10,15 @@ with ``import_report.json`` (and ``report.json``, the final validation).
 Which inputs are made to stand: ProcTHOR/Holodeck houses and SceneDefs by default (their
 coordinates were authored for other assets and another engine); a holomj ``scene.json`` is
 the source of truth and is compiled as it is (``fix=True`` makes it stand too, ``fix=False``
-compiles any input as imported). A scene with objects the stage cannot save is refused
-(:class:`SceneUnstableError`, exit code 1, nothing written) unless ``allow_invalid``, which
-writes it marked ``"valid": false`` in ``import_report.json``.
+compiles any input as imported).
+
+A house is never thrown away for what can be fixed or honestly left out
+(:mod:`holomj.physics.standing.keep`): an object that cannot stand where it was authored moves
+to another receptacle of the same kind, else it is left out; each is recorded in
+``import_report.json`` (``relocated``, ``left_out``: from where, to where, why). Refused
+(:class:`SceneUnstableError`, exit code 1, nothing written) unless ``allow_invalid`` (which
+writes it marked ``"valid": false``): a house that keeps less than :data:`MIN_KEPT_SHARE` of
+its objects, one that leaves any object out with ``strict``, one that still does not validate.
 """
 
 from __future__ import annotations
@@ -23,18 +29,20 @@ from pathlib import Path
 from typing import Any
 
 from holomj.errors import HolomjError
+from holomj.file_names import IMPORT_REPORT, REPORT_JSON
 from holomj.formats.summaries import model_summary, scene_summary
-from holomj.jobs.folder import IMPORT_REPORT, REPORT_JSON, prepare_output, write_scene_folder
+from holomj.jobs.folder import prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, Profile, check_profile, compile_scene
 from holomj.mjcf.objects import Furniture
 from holomj.physics.smoke import simulate
-from holomj.physics.standing import StandOutcome, make_stand
+from holomj.physics.standing.keep import KeptHouse, make_stand_keeping
 from holomj.spec.report import StabilityReport
 from holomj.spec.scene import SceneSpec
 
 FIXED_FORMATS = ("procthor", "holodeck", "scenedef")  # made to stand unless fix=False
 MAX_NAMED = 8  # unsaved objects named in the error message
+MIN_KEPT_SHARE = 0.97  # a house keeps at least this share of its objects
 
 
 class SceneUnstableError(HolomjError):
@@ -81,6 +89,7 @@ def compile_file(
     seed: int = 0,
     fix: bool | None = None,
     allow_invalid: bool = False,
+    strict: bool = False,
 ) -> CompileReport:
     """Import ``input_path`` (any supported format), compile it and export it to ``out``.
 
@@ -97,7 +106,8 @@ def compile_file(
     ``fix`` (None: by format, see the module docstring) makes the scene stand; the report's
     ``stand`` (and ``import_report.json``) lists every change. Raises
     :class:`SceneUnstableError` naming the objects it could not save, before anything is
-    written, unless ``allow_invalid``.
+    written, unless ``allow_invalid``; objects that cannot stand anywhere are left out (and
+    listed) unless ``strict``, which refuses the house instead.
     """
     from holomj.importers import load_scene_input
 
@@ -112,8 +122,10 @@ def compile_file(
     build = _Builder(library, checked_profile, robot, seed)
     stand = None
     if fix if fix is not None else result.format in FIXED_FORMATS:
-        stand = _make_stand(result.scene, library, build, Path(input_path), out, allow_invalid)
-        compiled = stand.compiled
+        stand = _make_stand(
+            result.scene, library, build, Path(input_path), out, (allow_invalid, strict)
+        )
+        compiled = stand.outcome.compiled
         timings["stand"] = time.perf_counter() - start
     else:
         compiled = build(result.scene, "as-is")
@@ -127,10 +139,15 @@ def compile_file(
     extra: dict[str, Any] = {}
     stand_record = None
     if stand is not None:
-        stand_record = {**stand.to_report(), "allow_invalid": allow_invalid}
+        stand_record = {
+            **stand.outcome.to_report(),
+            **stand.to_report(),
+            "allow_invalid": allow_invalid,
+            "strict": strict,
+        }
         report_json.update(stand_record)
-        if stand.report is not None:
-            extra[REPORT_JSON] = stand.report.model_dump(mode="json")
+        if stand.outcome.report is not None:
+            extra[REPORT_JSON] = stand.outcome.report.model_dump(mode="json")
     start = time.perf_counter()
     write_scene_folder(
         compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json, **extra}
@@ -186,29 +203,47 @@ def _make_stand(
     build: _Builder,
     source: Path,
     out: Path,
-    allow_invalid: bool,
-) -> StandOutcome:
-    """The scene made to stand (its validation report names ``out``, as ``holomj validate
-    OUT`` would); :class:`SceneUnstableError` when it does not stand, unless
-    ``allow_invalid``."""
-    outcome = make_stand(scene, library, build, validate_unsaved=allow_invalid, source=out)
-    if not outcome.valid and not allow_invalid:
-        named = "; ".join(f"{u.name} ({u.why})" for u in outcome.unsaved[:MAX_NAMED])
-        more = len(outcome.unsaved) - MAX_NAMED
-        if more > 0:
-            named += f"; and {more} more"
-        what = (
-            f"{len(outcome.unsaved)} object(s) could not be made to stand: {named}"
-            if outcome.unsaved
-            else f"the scene does not validate: {_verdict(outcome.report)}"
-        )
+    flags: tuple[bool, bool],
+) -> KeptHouse:
+    """The scene made to stand, moving or leaving out what cannot (its validation report
+    names ``out``, as ``holomj validate OUT`` would); :class:`SceneUnstableError` when it
+    does not stand, keeps too little or (``strict``) leaves anything out, unless
+    ``allow_invalid`` (``flags``: ``(allow_invalid, strict)``)."""
+    allow_invalid, strict = flags
+    kept = make_stand_keeping(scene, library, build, source=out)
+    problem = _refusal(kept, strict)
+    if problem is not None and not allow_invalid:
         raise SceneUnstableError(
-            what,
+            problem,
             where=str(source),
             fix="nothing was written; pass --allow-invalid to write the scene anyway "
             "(marked invalid in import_report.json), or --no-fix to compile it as imported",
         )
-    return outcome
+    return kept
+
+
+def _refusal(kept: KeptHouse, strict: bool) -> str | None:
+    """Why the house is refused, or None."""
+    outcome, left = kept.outcome, kept.left_out
+    if strict and left:
+        return f"--strict: {len(left)} object(s) would be left out: {_named(left)}"
+    if kept.kept_share < MIN_KEPT_SHARE:
+        return (
+            f"the house keeps only {kept.kept_share:.1%} of its {kept.imported} objects "
+            f"(at least {MIN_KEPT_SHARE:.0%} needed); left out: {_named(left)}"
+        )
+    if outcome.valid:
+        return None
+    if outcome.unsaved:
+        rows = [{"object": u.name, "why": u.why} for u in outcome.unsaved]
+        return f"{len(rows)} object(s) could not be made to stand: {_named(rows)}"
+    return f"the scene does not validate: {_verdict(outcome.report)}"
+
+
+def _named(rows: list[dict[str, Any]]) -> str:
+    named = "; ".join(f"{r['object']} ({r['why']})" for r in rows[:MAX_NAMED])
+    more = len(rows) - MAX_NAMED
+    return named + (f"; and {more} more" if more > 0 else "")
 
 
 def _verdict(report: StabilityReport | None) -> str:

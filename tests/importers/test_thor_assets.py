@@ -327,7 +327,7 @@ def _table_targets() -> list[str]:
 
 def test_turned_stand_in_keeps_tilted_orientation_consistent() -> None:
     from holomj.importers.frames import quat_from_euler_xyz, quat_from_unity
-    from holomj.importers.procthor import _turn_quat
+    from holomj.importers.house_objects import turn_quat as _turn_quat
 
     # a pure yaw: turning the quaternion by 90° is the yaw plus 90°
     turned = _turn_quat(quat_from_unity(0.0, 30.0, 0.0), 90.0)

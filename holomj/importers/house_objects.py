@@ -178,6 +178,7 @@ class HouseObjects(ImportState):
                 centre_height=pose.raw[1],
                 room=room_node.string() if room_node is not None else room,
                 child=parent is not None,
+                above_support=pose.raw[1] - parent.src_top if parent is not None else None,
             )
             return holodeck_object_kind(node, raw_id, asset, self.hints, self.library, authored)
         return thor_object_kind(node, raw_id, asset)

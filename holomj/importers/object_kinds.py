@@ -120,6 +120,7 @@ class Authored:
     centre_height: float
     room: str | None
     child: bool
+    above_support: float | None = None  # its centre above its receptacle's top (source)
 
 
 def holodeck_object_kind(
@@ -171,7 +172,11 @@ def _authored_size(
         typical = _typical_size(known.category if known else name, library, known) or planned
         if typical is not None:
             return scaled_to_extent(typical, extent), "extent"
-        return (extent, extent, extent), "extent"
+        # Nothing says its shape: as wide as listed, as tall as its centre was above its
+        # receptacle allows (a throw blanket is not a cube).
+        above = authored.above_support
+        height = min(max(2 * above, 0.02), extent) if above and above > 0 else extent / 2
+        return (extent, extent, height), "extent"
     return None
 
 

@@ -26,8 +26,8 @@ from pathlib import Path
 from typing import Any
 
 from holomj.library.store import AssetLibrary
+from holomj.physics.standing.records import FLOOR
 from holomj.physics.standing.stage import (
-    FLOOR,
     Recompile,
     StandOptions,
     StandOutcome,

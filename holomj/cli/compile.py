@@ -144,7 +144,7 @@ def _print_stand(stand: dict) -> None:
         f"(max {after['max_m'] * 1000:.1f} mm)"
     )
     _print_kept(stand)
-    validation = stand.get("validation")
+    validation = stand.get("validation") or {}
     if stand["valid"]:
         out_console.print(
             f"  [green]valid:[/] {validation['stable']}/{validation['objects']} objects stable"

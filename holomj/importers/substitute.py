@@ -47,6 +47,7 @@ from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
+from holomj.importers.frames import triple
 from holomj.importers.result import Substitution
 from holomj.library.store import (
     BUILTIN_BOX,
@@ -110,7 +111,7 @@ def clamped_scale(scale: tuple[float, float, float]) -> tuple[float, float, floa
     SCALE_MAX]``, the largest at most ``MAX_ASPECT_CHANGE`` times the smallest)."""
     clamped = [min(max(f, SCALE_MIN), SCALE_MAX) for f in scale]
     low = min(clamped)
-    return tuple(round(min(f, low * MAX_ASPECT_CHANGE), 4) for f in clamped)  # type: ignore[return-value]
+    return triple(round(min(f, low * MAX_ASPECT_CHANGE), 4) for f in clamped)
 
 
 def _may_turn(asset: LibraryAsset) -> bool:
@@ -125,7 +126,7 @@ def _turned(size: tuple[float, float, float], turn: float) -> tuple[float, float
 
 
 def _raw_scale(asset_size: Size, target: Size) -> tuple[float, float, float]:
-    return tuple(round(t / max(a, 1e-6), 4) for a, t in zip(asset_size, target))  # type: ignore[return-value]
+    return triple(round(t / max(a, 1e-6), 4) for a, t in zip(asset_size, target))
 
 
 def straight_distance(a: Size, b: Size) -> float:

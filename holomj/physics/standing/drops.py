@@ -265,7 +265,7 @@ def _drop_one(
         result.reason = "placed"
         result.surface_index = surface.world.index
         result.position = (round(px, 6), round(py, 6), round(pz + lift, 6))
-        result.quat = tuple(round(float(v), 8) for v in q)  # type: ignore[assignment]
+        result.quat = _quat4(q)
         return result
     if child.static and _hold_still(world, obj.id, target, base_quat, parent.id, bottom, result):
         return result
@@ -300,9 +300,14 @@ def _hold_still(
     result.accepted = True
     result.reason = "held still above its parent (static)"
     result.static_hold = True
-    result.position = tuple(round(float(v), 6) for v in pos)  # type: ignore[assignment]
-    result.quat = tuple(round(float(v), 8) for v in quat)  # type: ignore[assignment]
+    result.position = (round(float(pos[0]), 6), round(float(pos[1]), 6), round(float(pos[2]), 6))
+    result.quat = _quat4(quat)
     return True
+
+
+def _quat4(quat: np.ndarray) -> tuple[float, float, float, float]:
+    w, x, y, z = (round(float(v), 8) for v in quat)
+    return (w, x, y, z)
 
 
 def _top(world: DropWorld, object_id: str) -> float:

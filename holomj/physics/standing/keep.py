@@ -3,11 +3,13 @@
 :func:`make_stand` refuses nothing: an object it cannot save is listed ``unsaved``. This stage
 runs it again (at most :data:`MAX_ROUNDS` times) after dealing with each unsaved object:
 
-1. **Another receptacle of the same kind.** A small object whose receptacle holds it nowhere
-   (turned, shifted and restacked on it, as the drops already try) goes to the nearest other
-   receptacle of the same category in the house (the other side table, the next shelf), at
-   the same height above it; each receptacle is tried once.
-2. **Left out.** When no receptacle is left to try (or the object is not a small object on a
+1. **Restacked.** A small object whose receptacle holds it nowhere (turned and shifted on
+   it, as the drops already try) is stacked on the nearest object beside it on that
+   receptacle with a footprint at least as large (a newspaper on a box).
+2. **Another receptacle of the same kind.** Else it goes to the nearest other receptacle of
+   the same category in the house (the other side table, the next shelf), at the same height
+   above it. Each new support is tried once.
+3. **Left out.** When no receptacle is left to try (or the object is not a small object on a
    receptacle: a piece of furniture wedged in too deep to separate, an object that does not
    settle), it is left out of the house, with what rests on it, and recorded with where it
    was and why.
@@ -85,7 +87,7 @@ def make_stand_keeping(
     source: Path | str = "scene",
 ) -> KeptHouse:
     """Make ``scene`` stand, moving or leaving out what cannot (see the module docstring)."""
-    category = {o.id: library.get(o.asset).meta.category for o in scene.objects}
+    facts = _Facts.of(scene, library)
     original = {o.id: o for o in scene.objects}
     tried: dict[str, set[str]] = {}
     why_moved: dict[str, str] = {}
@@ -107,11 +109,12 @@ def make_stand_keeping(
             why = unsaved.get(obj.id)
             if why is None or _follows_parent(obj, why, unsaved):
                 continue
-            target = None if last else _other_receptacle(obj, by_id, category, tried)
-            if target is None:
+            step = None if last else _next_support(obj, by_id, facts, tried, unsaved)
+            if step is None:
                 left[obj.id] = why
                 continue
-            why_moved[obj.id] = f"{why}; moved to {target.id}, another {category[target.id]}"
+            target, how = step
+            why_moved[obj.id] = f"{why}; {how}"
             moved[obj.id] = _onto(obj, by_id[str(obj.support)], target)
         objects = _carried(work.objects, moved, left)
         objects = _without_orphans(objects, left)
@@ -125,28 +128,54 @@ def make_stand_keeping(
     return KeptHouse(outcome, len(scene.objects), changes, rounds)
 
 
-def _other_receptacle(
+def _next_support(
     obj: SceneObject,
     objects: dict[str, SceneObject],
-    category: dict[str, str],
+    facts: _Facts,
     tried: dict[str, set[str]],
-) -> SceneObject | None:
-    """The nearest receptacle of the same category as ``obj``'s, not tried yet."""
+    unsaved: dict[str, str],
+) -> tuple[SceneObject, str] | None:
+    """Where ``obj`` goes next, and how to say it: restacked on a larger object beside it on
+    the same receptacle, else the nearest other receptacle of the same category; each tried
+    once, none that is itself unsaved."""
     if obj.support is None or obj.support not in objects:
         return None
     current = objects[obj.support]
     done = tried.setdefault(obj.id, {current.id})
-    kind = category[current.id]
-    others = [
+    free = [o for o in objects.values() if o.id not in done and o.id != obj.id]
+    free = [o for o in free if o.id not in unsaved]
+    stacks = [
         o
-        for o in objects.values()
-        if o.id not in done and o.id != obj.id and category.get(o.id) == kind
+        for o in free
+        if o.support == current.id and facts.area[o.id] >= facts.area[obj.id] and o.quat is None
     ]
-    if not others:
-        return None
-    best = min(others, key=lambda o: (math.dist(o.position[:2], obj.position[:2]), o.id))
-    done.add(best.id)
-    return best
+    kind = facts.category[current.id]
+    others = [o for o in free if facts.category.get(o.id) == kind]
+    for group, how in ((stacks, "restacked on {}"), (others, "moved to {}, another " + kind)):
+        if group:
+            best = min(group, key=lambda o: (math.dist(o.position[:2], obj.position[:2]), o.id))
+            done.add(best.id)
+            return best, how.format(best.id)
+    return None
+
+
+@dataclass(frozen=True)
+class _Facts:
+    """Per object: its asset's category and its footprint area (scaled)."""
+
+    category: dict[str, str]
+    area: dict[str, float]
+
+    @classmethod
+    def of(cls, scene: SceneSpec, library: AssetLibrary) -> _Facts:
+        metas = {o.id: library.get(o.asset).meta for o in scene.objects}
+        return cls(
+            {k: m.category for k, m in metas.items()},
+            {
+                o.id: metas[o.id].size[0] * o.scale3[0] * metas[o.id].size[1] * o.scale3[1]
+                for o in scene.objects
+            },
+        )
 
 
 def _follows_parent(obj: SceneObject, why: str, unsaved: dict[str, str]) -> bool:

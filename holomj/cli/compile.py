@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
+from rich.markup import escape
 
 from holomj.cli.options import (
     JsonOption,
@@ -150,12 +151,10 @@ def _print_stand(stand: dict) -> None:
             f"  [green]valid:[/] {validation['stable']}/{validation['objects']} objects stable"
         )
         return
-    unsaved = stand["unsaved"]
     out_console.print(
-        f"  [bold red]INVALID[/] (written with --allow-invalid): {len(unsaved)} object(s) "
-        "could not be made to stand (see import_report.json)"
+        f"  [bold red]INVALID[/] (written with --allow-invalid): {escape(str(stand['refusal']))}"
     )
-    for row in unsaved[:8]:
+    for row in stand["unsaved"][:8]:
         out_console.print(f"    {row['object']}: {row['why']}", markup=False)
 
 

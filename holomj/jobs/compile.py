@@ -122,7 +122,7 @@ def compile_file(
     build = _Builder(library, checked_profile, robot, seed)
     stand = None
     if fix if fix is not None else result.format in FIXED_FORMATS:
-        stand = _make_stand(
+        stand, refusal = _make_stand(
             result.scene, library, build, Path(input_path), out, (allow_invalid, strict)
         )
         compiled = stand.outcome.compiled
@@ -142,6 +142,8 @@ def compile_file(
         stand_record = {
             **stand.outcome.to_report(),
             **stand.to_report(),
+            "valid": stand.outcome.valid and refusal is None,
+            "refusal": refusal,
             "allow_invalid": allow_invalid,
             "strict": strict,
         }
@@ -204,11 +206,12 @@ def _make_stand(
     source: Path,
     out: Path,
     flags: tuple[bool, bool],
-) -> KeptHouse:
+) -> tuple[KeptHouse, str | None]:
     """The scene made to stand, moving or leaving out what cannot (its validation report
     names ``out``, as ``holomj validate OUT`` would); :class:`SceneUnstableError` when it
     does not stand, keeps too little or (``strict``) leaves anything out, unless
-    ``allow_invalid`` (``flags``: ``(allow_invalid, strict)``)."""
+    ``allow_invalid`` (``flags``: ``(allow_invalid, strict)``); then the reason it would
+    have been refused comes with it (None when it stands)."""
     allow_invalid, strict = flags
     kept = make_stand_keeping(scene, library, build, source=out)
     problem = _refusal(kept, strict)
@@ -219,7 +222,7 @@ def _make_stand(
             fix="nothing was written; pass --allow-invalid to write the scene anyway "
             "(marked invalid in import_report.json), or --no-fix to compile it as imported",
         )
-    return kept
+    return kept, problem
 
 
 def _refusal(kept: KeptHouse, strict: bool) -> str | None:

@@ -33,6 +33,7 @@ from holomj.library.store import normalise_category
 Size = tuple[float, float, float]  # x = depth, y = width, z = height, metres
 
 _INSTANCE = re.compile(r"-\d+$")  # "sofa-0" -> "sofa"
+_HEAD_OF = re.compile(r"\s+(with|of|for|on)\s+.*$")  # "vase with flowers" -> "vase"
 _ROOM_SUFFIX = re.compile(r"\s*\([^)]*\)\s*$")  # "sofa-0 (living room)" -> "sofa-0"
 _MIN_EXTENT_M = 0.01
 _MAX_SMALL_EXTENT_M = 3.0
@@ -79,10 +80,18 @@ def _singulars(word: str) -> Iterable[str]:
 
 
 def category_for_name(name: str, categories: Iterable[str]) -> KnownKind | None:
-    """The library category ``name`` speaks of (see the module notes), or None.
+    """The library category ``name`` speaks of (see the module notes), or None. The head of a
+    phrase goes first (``"vase with flowers"`` is a vase).
 
     ``categories``: the library's categories; a knowledge-base kind counts only when the
     library has assets of its category, a library category named outright always counts."""
+    names = list(categories)
+    head = _HEAD_OF.sub("", name)
+    found = _category_for(head, names) if head != name else None
+    return found or _category_for(name, names)
+
+
+def _category_for(name: str, categories: list[str]) -> KnownKind | None:
     library = {normalise_category(c): c for c in categories}
     known = _knowledge_names()
     words = [w for w in re.split(r"[^a-z0-9]+", name.lower()) if w]
@@ -119,6 +128,7 @@ class HolodeckHints:
         plan = data.get("object_selection_plan")
         for room, objects in plan.items() if isinstance(plan, dict) else ():
             for name, entry in objects.items() if isinstance(objects, dict) else ():
+                name = str(name)
                 if not isinstance(entry, dict):
                     continue
                 size = _cm_size(entry.get("size"))
@@ -126,7 +136,8 @@ class HolodeckHints:
                     hints.plan_sizes[(str(room).lower(), name.lower())] = size
                 if entry.get("location") == "wall":
                     hints.wall.add(f"{str(room).lower()}/{name.lower()}")
-        for item in data.get("wall_objects") or ():
+        walls = data.get("wall_objects")
+        for item in walls if isinstance(walls, list) else ():
             if isinstance(item, dict) and isinstance(item.get("id"), str):
                 hints.wall.add(f"{_room_of(item)}/{base_name(item['id'])}")
         smalls = data.get("receptacle2small_objects")

@@ -35,7 +35,6 @@ from holomj.importers.thor_assets import (
 from holomj.library.store import AssetLibrary
 
 _INSTANCE_SUFFIX = re.compile(r"-\d+$")  # Holodeck instance numbers: "sofa-0"
-_HEAD_OF = re.compile(r"\s+(with|of|for|on)\s+.*$")  # "vase with flowers" -> "vase"
 Size = tuple[float, float, float]
 
 
@@ -132,9 +131,7 @@ def holodeck_object_kind(
     ``extent`` (a small object's listed largest side) or ``category`` (a typical size)."""
     name_node = node.opt("object_name")
     name = base_name(name_node.string() if name_node is not None else raw_id)
-    known = category_for_name(_HEAD_OF.sub("", name), library.categories()) or (
-        category_for_name(name, library.categories())
-    )
+    known = category_for_name(name, library.categories())
     category = known.category if known is not None else name
     thor = thor_asset(asset) if asset else None
     if thor is not None:

@@ -81,6 +81,15 @@ def compile_command(
             "out; by default what cannot stand anywhere is left out and listed.",
         ),
     ] = False,
+    objathor: Annotated[
+        Path | None,
+        typer.Option(
+            "--objathor",
+            help="objathor asset folder: the Objaverse assets a Holodeck house names by uid "
+            "are imported from it into the library first, so the real meshes are used where "
+            "it has them (stand-ins of the same kind elsewhere).",
+        ),
+    ] = None,
     as_json: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
@@ -103,6 +112,7 @@ def compile_command(
                 fix=fix,
                 allow_invalid=allow_invalid,
                 strict=strict,
+                objathor=objathor,
             )
         )
     if as_json:

@@ -23,6 +23,7 @@ its objects, one that leaves any object out with ``strict``, one that still does
 
 from __future__ import annotations
 
+import json
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -90,6 +91,7 @@ def compile_file(
     fix: bool | None = None,
     allow_invalid: bool = False,
     strict: bool = False,
+    objathor: Path | None = None,
 ) -> CompileReport:
     """Import ``input_path`` (any supported format), compile it and export it to ``out``.
 
@@ -108,6 +110,10 @@ def compile_file(
     :class:`SceneUnstableError` naming the objects it could not save, before anything is
     written, unless ``allow_invalid``; objects that cannot stand anywhere are left out (and
     listed) unless ``strict``, which refuses the house instead.
+
+    ``objathor``: an objathor asset folder; the Objaverse assets the house names by uid that
+    it holds are imported into the library first (:func:`holomj.jobs.objathor.import_objathor`),
+    so the house uses the real meshes where the folder has them and stand-ins elsewhere.
     """
     from holomj.importers import load_scene_input
 
@@ -115,6 +121,9 @@ def compile_file(
     checked_profile = check_profile(profile)
     prepare_output(out, overwrite)
     start = time.perf_counter()
+    objathor_note = None
+    if objathor is not None:
+        library_path, objathor_note = _objathor_assets(Path(input_path), objathor, library_path)
     library = AssetLibrary.open(library_path)
     result = load_scene_input(Path(input_path), library, fmt)
     timings["import"] = time.perf_counter() - start
@@ -163,7 +172,7 @@ def compile_file(
         model=model_summary(compiled.model),
         substitutions=[s.__dict__ for s in result.substitutions],
         merged=list(result.merged),
-        warnings=list(result.warnings),
+        warnings=[*([objathor_note] if objathor_note else []), *result.warnings],
         sim_warnings=sim_warnings,
         timings_s={k: round(v, 4) for k, v in timings.items()},
         robot=_robot_summary(compiled.robot),
@@ -247,6 +256,42 @@ def _named(rows: list[dict[str, Any]]) -> str:
     named = "; ".join(f"{r['object']} ({r['why']})" for r in rows[:MAX_NAMED])
     more = len(rows) - MAX_NAMED
     return named + (f"; and {more} more" if more > 0 else "")
+
+
+def _objathor_assets(
+    house: Path, directory: Path, library_path: Path | None
+) -> tuple[Path | None, str]:
+    """Import into the library the assets of ``directory`` that ``house`` names by uid; the
+    library to use and a note of what was imported."""
+    from holomj.jobs.objathor import import_objathor
+
+    try:
+        data = json.loads(house.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return library_path, "--objathor: the house could not be read for its asset ids"
+    assets = directory / "assets" if (directory / "assets").is_dir() else directory
+    named = sorted(_asset_ids(data.get("objects") if isinstance(data, dict) else None))
+    present = [uid for uid in named if (assets / uid).is_dir()]
+    if not present:
+        return (
+            library_path,
+            f"--objathor: none of the house's {len(named)} asset ids is in {assets}",
+        )
+    imported = import_objathor(directory, library=library_path, uids=present)
+    return imported.library, (
+        f"--objathor: {len(present)} of the house's {len(named)} asset ids imported from {assets}"
+    )
+
+
+def _asset_ids(objects: Any) -> set[str]:
+    """The ``assetId`` of every object and nested child."""
+    found: set[str] = set()
+    for obj in objects if isinstance(objects, list) else ():
+        if isinstance(obj, dict):
+            if isinstance(obj.get("assetId"), str):
+                found.add(obj["assetId"])
+            found |= _asset_ids(obj.get("children"))
+    return found
 
 
 def _verdict(report: StabilityReport | None) -> str:

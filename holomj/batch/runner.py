@@ -31,7 +31,7 @@ def run_job(job: Job, out_dir: Path, options: JobOptions) -> JobResult:
     out_dir = Path(out_dir)
     clean_partial(out_dir, job)
     folder = job_folder(out_dir, job)
-    house: dict[str, int] = {}
+    house: dict[str, int | None] = {"moved": None, "left_out": None, "substituted": None}
     if job.kind == "prompt":
         report = _generate(job, folder, options)
     else:
@@ -50,7 +50,9 @@ def run_job(job: Job, out_dir: Path, options: JobOptions) -> JobResult:
         stable_fraction=round(stable / objects, 4) if objects else 1.0,
         seconds=round(time.perf_counter() - start, 3),
         output=job.id,
-        **house,
+        moved=house["moved"],
+        left_out=house["left_out"],
+        substituted=house["substituted"],
     )
     write_file(folder / MARKER, result.model_dump_json(indent=2) + "\n")
     return result
@@ -85,7 +87,7 @@ def _generate(job: Job, folder: Path, options: JobOptions) -> StabilityReport:
 
 def _compile_and_validate(
     job: Job, folder: Path, options: JobOptions
-) -> tuple[StabilityReport, dict[str, int]]:
+) -> tuple[StabilityReport, dict[str, int | None]]:
     """The validation report, and what the import changed (moved, left out, substituted)."""
     from holomj.jobs.compile import compile_file
     from holomj.jobs.validate import validate

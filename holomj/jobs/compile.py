@@ -32,6 +32,7 @@ from typing import Any
 from holomj.errors import HolomjError
 from holomj.file_names import IMPORT_REPORT, REPORT_JSON
 from holomj.formats.summaries import model_summary, scene_summary
+from holomj.importers.result import ImportResult
 from holomj.jobs.folder import prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, Profile, check_profile, compile_scene
@@ -107,29 +108,19 @@ def compile_file(
 
     ``fix`` (None: by format, see the module docstring) makes the scene stand; the report's
     ``stand`` (and ``import_report.json``) lists every change. Raises
-    :class:`SceneUnstableError` naming the objects it could not save, before anything is
-    written, unless ``allow_invalid``; objects that cannot stand anywhere are left out (and
-    listed) unless ``strict``, which refuses the house instead.
-
-    ``objathor``: an objathor asset folder; the Objaverse assets the house names by uid that
-    it holds are imported into the library first (:func:`holomj.jobs.objathor.import_objathor`),
-    so the house uses the real meshes where the folder has them and stand-ins elsewhere.
+    :class:`SceneUnstableError` (nothing written) when it does not stand, keeps too little or,
+    with ``strict``, leaves anything out, unless ``allow_invalid``. ``objathor``: a folder
+    whose Objaverse assets the house names are imported into the library first.
     """
-    from holomj.importers import load_scene_input
-
     timings: dict[str, float] = {}
     checked_profile = check_profile(profile)
     prepare_output(out, overwrite)
     start = time.perf_counter()
-    objathor_note = None
-    if objathor is not None:
-        library_path, objathor_note = _objathor_assets(Path(input_path), objathor, library_path)
-    library = AssetLibrary.open(library_path)
-    result = load_scene_input(Path(input_path), library, fmt)
+    library, result, objathor_note = _import(Path(input_path), fmt, library_path, objathor)
     timings["import"] = time.perf_counter() - start
     start = time.perf_counter()
     build = _Builder(library, checked_profile, robot, seed)
-    stand = None
+    stand, refusal = None, None
     if fix if fix is not None else result.format in FIXED_FORMATS:
         stand, refusal = _make_stand(
             result.scene, library, build, Path(input_path), out, (allow_invalid, strict)
@@ -144,25 +135,10 @@ def compile_file(
         start = time.perf_counter()
         sim_warnings = simulate(compiled.model, check_seconds).warnings
         timings["check"] = time.perf_counter() - start
-    report_json = {**result.to_report(), "simulation_warnings": sim_warnings}
-    extra: dict[str, Any] = {}
-    stand_record = None
-    if stand is not None:
-        stand_record = {
-            **stand.outcome.to_report(),
-            **stand.to_report(),
-            "valid": stand.outcome.valid and refusal is None,
-            "refusal": refusal,
-            "allow_invalid": allow_invalid,
-            "strict": strict,
-        }
-        report_json.update(stand_record)
-        if stand.outcome.report is not None:
-            extra[REPORT_JSON] = stand.outcome.report.model_dump(mode="json")
+    stand_record = None if stand is None else _stand_record(stand, refusal, allow_invalid, strict)
+    files = _report_files(result, sim_warnings, stand, stand_record)
     start = time.perf_counter()
-    write_scene_folder(
-        compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json, **extra}
-    )
+    write_scene_folder(compiled, out, overwrite=overwrite, extra_json=files)
     timings["export"] = time.perf_counter() - start
     return CompileReport(
         input=str(input_path),
@@ -178,6 +154,20 @@ def compile_file(
         robot=_robot_summary(compiled.robot),
         stand=stand_record,
     )
+
+
+def _import(
+    input_path: Path, fmt: str | None, library_path: Path | None, objathor: Path | None
+) -> tuple[AssetLibrary, ImportResult, str | None]:
+    """The library (with the house's objathor assets imported into it first, when asked),
+    the imported scene, and a note of what ``objathor`` brought."""
+    from holomj.importers import load_scene_input
+
+    note = None
+    if objathor is not None:
+        library_path, note = _objathor_assets(input_path, objathor, library_path)
+    library = AssetLibrary.open(library_path)
+    return library, load_scene_input(input_path, library, fmt), note
 
 
 class _Builder:
@@ -206,6 +196,39 @@ class _Builder:
         from holomj.robots.attach import reattach_robot
 
         return reattach_robot(compiled, self.first)
+
+
+def _report_files(
+    result: ImportResult,
+    sim_warnings: dict[str, int],
+    stand: KeptHouse | None,
+    stand_record: dict[str, Any] | None,
+) -> dict[str, Any]:
+    """``import_report.json`` and, when the house was made to stand, ``report.json``."""
+    files: dict[str, Any] = {
+        IMPORT_REPORT: {
+            **result.to_report(),
+            "simulation_warnings": sim_warnings,
+            **(stand_record or {}),
+        }
+    }
+    if stand is not None and stand.outcome.report is not None:
+        files[REPORT_JSON] = stand.outcome.report.model_dump(mode="json")
+    return files
+
+
+def _stand_record(
+    stand: KeptHouse, refusal: str | None, allow_invalid: bool, strict: bool
+) -> dict[str, Any]:
+    """What making the house stand changed, for ``import_report.json`` and the report."""
+    return {
+        **stand.outcome.to_report(),
+        **stand.to_report(),
+        "valid": stand.outcome.valid and refusal is None,
+        "refusal": refusal,
+        "allow_invalid": allow_invalid,
+        "strict": strict,
+    }
 
 
 def _make_stand(

@@ -47,7 +47,7 @@ from holomj.physics.audit import Rooms, audit
 from holomj.physics.drop_world import DropWorld
 from holomj.physics.repair import add_settled_key, bake, moves, separate
 from holomj.physics.scene_io import LoadedScene, loaded_from_compiled
-from holomj.physics.settle import run_validation
+from holomj.physics.settle import Validation, run_validation
 from holomj.physics.spawn import PARK_HEIGHT_M
 from holomj.physics.standing.drops import Child, Dropped, drop_children
 from holomj.physics.standing.prepass import prepare
@@ -59,6 +59,7 @@ from holomj.physics.standing.records import (
     separations,
     validation_summary,
 )
+from holomj.spec.assets import AssetMeta
 from holomj.spec.report import RepairAction, StabilityReport, Thresholds, Unsaved
 from holomj.spec.scene import SceneObject, SceneSpec
 
@@ -156,10 +157,6 @@ def make_stand(
     th = opts.thresholds
     clock = _Clock()
     metas = {o.id: library.get(o.asset).meta for o in scene.objects}
-
-    def furniture(obj: SceneObject) -> bool:
-        return is_furniture(obj, metas[obj.id])
-
     rooms = Rooms(scene, 0.0).polygons
 
     # 1. every object gets a free joint where it can (children are dropped with one)
@@ -195,11 +192,7 @@ def make_stand(
 
     # 4. drop the children
     jobs = _child_jobs(scene, second, children, child_ids)
-    world = DropWorld(compiled, sorted(child_ids), nthread=1)
-    try:
-        drops = drop_children(world, jobs, {o.id: o for o in second.objects}, metas)
-    finally:
-        world.close()
+    drops = _drop(compiled, jobs, second, metas)
     clock.lap("drops")
 
     # 5. settle, holding still (parked) what is already lost and what rests on it
@@ -207,17 +200,7 @@ def make_stand(
     lost = {u.name: u.why for u in unsaved_separated}
     lost.update({oid: d.reason for oid, d in drops.items() if not d.accepted})
     lost.update(_resting_on(placed_scene.objects, set(lost)))
-    settle_scene = _rebuilt(
-        placed_scene,
-        [
-            o.model_copy(update={"static": o.id in lost or (o.static and not furniture(o))})
-            for o in _parked(placed_scene.objects, set(lost), scene)
-        ],
-    )
-    settle_compiled = compile_scene(settle_scene, library, furniture="as-is")
-    settling = run_validation(
-        loaded_from_compiled(settle_compiled, library, Path(source)), th, "free", opts.sleep
-    )
+    settle_compiled, settling = _settle(placed_scene, scene, lost, library, metas, opts, source)
     baked, unstable = bake(placed_scene, settling, keep=set(lost))
     unsaved = [Unsaved(name=k, why=v) for k, v in lost.items()]
     unsaved += [
@@ -244,10 +227,7 @@ def make_stand(
         compiled=final,
         report=report,
         moved=[a for a in moved if a not in settled_only],
-        settled={
-            "objects": len(settled_only),
-            "max_m": round(max((a.moved_m for a in settled_only), default=0.0), 6),
-        },
+        settled=_settled_summary(settled_only),
         dropped=[drops[o.id] for o in children],
         separated=separated,
         reassigned=reassigned(scene, baked, prepared.reasons),
@@ -256,6 +236,47 @@ def make_stand(
         after=after,
         seconds=clock.laps,
     )
+
+
+def _drop(
+    compiled: CompiledScene, jobs: list[Child], second: SceneSpec, metas: dict[str, AssetMeta]
+) -> dict[str, Dropped]:
+    """Every child dropped onto its parent, in a drop world of the compiled scene."""
+    world = DropWorld(compiled, sorted(j.obj.id for j in jobs), nthread=1)
+    try:
+        return drop_children(world, jobs, {o.id: o for o in second.objects}, metas)
+    finally:
+        world.close()
+
+
+def _settle(
+    placed: SceneSpec,
+    scene: SceneSpec,
+    lost: dict[str, str],
+    library: AssetLibrary,
+    metas: dict[str, AssetMeta],
+    opts: StandOptions,
+    source: Path | str,
+) -> tuple[CompiledScene, Validation]:
+    """Settle the placed scene with furniture free, holding still (parked) what is lost and
+    static props; the compiled scene and the validation run."""
+    objects = [
+        o.model_copy(
+            update={"static": o.id in lost or (o.static and not is_furniture(o, metas[o.id]))}
+        )
+        for o in _parked(placed.objects, set(lost), scene)
+    ]
+    compiled = compile_scene(_rebuilt(placed, objects), library, furniture="as-is")
+    loaded = loaded_from_compiled(compiled, library, Path(source))
+    return compiled, run_validation(loaded, opts.thresholds, "free", opts.sleep)
+
+
+def _settled_summary(settled_only: list[RepairAction]) -> dict[str, Any]:
+    """How many objects settling alone moved slightly, and the most."""
+    return {
+        "objects": len(settled_only),
+        "max_m": round(max((a.moved_m for a in settled_only), default=0.0), 6),
+    }
 
 
 def _child_jobs(

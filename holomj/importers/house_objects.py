@@ -16,7 +16,10 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from shapely.geometry import Polygon
+
 from holomj.importers.common import build_model
+from holomj.importers.counter_shapes import counter_shape, nearest_run, split_counter
 from holomj.importers.frames import (
     is_tilted,
     normalise_deg,
@@ -72,6 +75,8 @@ class HouseObjects(ImportState):
     holodeck: bool
     hints: HolodeckHints
     objects: list[SceneObject]
+    room_shapes: list[tuple[str, Polygon]]
+    counter_runs: dict[str, list[SceneObject]]  # shaped countertops, by their id
 
     def room_at(self, x: float, y: float) -> str | None:  # pragma: no cover - overridden
         """The room that holds the point (the importer knows its rooms)."""
@@ -79,6 +84,7 @@ class HouseObjects(ImportState):
 
     def read_objects(self) -> None:
         """Every object of ``objects`` (nested ``children`` included) into ``self.objects``."""
+        self.counter_runs = {}
         nodes = self.root.opt("objects")
         if nodes is None:
             return
@@ -98,6 +104,48 @@ class HouseObjects(ImportState):
                 self._object(item, None, placed)
         for item, parent_raw in deferred:
             self._object(item, placed.get(parent_raw), placed)
+        self._onto_counter_runs()
+
+    def _onto_counter_runs(self) -> None:
+        """What rested on a shaped countertop rests on the run under it (the nearest)."""
+        runs = self.counter_runs
+        if not runs:
+            return
+        self.objects = [
+            o.model_copy(update={"support": nearest_run(runs[o.support], *o.position[:2])})
+            if o.support in runs
+            else o
+            for o in self.objects
+        ]
+
+    def _counter_runs(
+        self, obj: SceneObject, shape: str, kind: Kind, size: tuple[float, float, float]
+    ) -> list[SceneObject]:
+        """A THOR L- or U-shaped countertop as its counter runs (:mod:`counter_shapes`)."""
+
+        def choose(run_id: str, size: tuple[float, float, float]) -> tuple[str, Any]:
+            choice, _ = choose_asset(
+                self.library,
+                object_id=run_id,
+                requested="",
+                category=kind.category,
+                size=size,
+                fit=True,
+                stand_ins=kind.stand_ins,
+                size_source="thor",
+                nearest_when_none_fits=True,
+            )
+            if choice.substitution is not None:
+                self.substitutions.append(choice.substitution)
+            return choice.asset, choice.scale
+
+        room = next((poly for rid, poly in self.room_shapes if rid == obj.room), None)
+        runs = split_counter(obj, shape, size, room, choose)
+        self.counter_runs[obj.id] = runs
+        self.warnings.append(
+            f"{obj.id}: {shape}-shaped countertop built as {len(runs)} counter runs"
+        )
+        return runs
 
     def _object(self, node: Node, parent: Placed | None, placed: dict[str, Placed]) -> None:
         node.dict()
@@ -117,7 +165,7 @@ class HouseObjects(ImportState):
             )
             return
         object_id = self.object_ids.new(raw_id, f"{node.path}.id")
-        choice = self._choose(node, object_id, asset, kind)
+        choice = self._choose(node, object_id, asset, kind, record=counter_shape(asset) is None)
         # The source's bottom: from its true height when a table or the input gives one.
         src_height = choice.height
         sub = choice.substitution
@@ -141,7 +189,12 @@ class HouseObjects(ImportState):
         rx, ry, rz = pose.rotation
         if is_tilted(rx, rz):
             fields["quat"] = turn_quat(quat_from_unity(rx, ry, rz), choice.turn_deg)
-        self.objects.append(build_model(SceneObject, fields, self.source, node.path))
+        built = build_model(SceneObject, fields, self.source, node.path)
+        shape = counter_shape(asset) if kind.size_source == "thor" else None
+        if shape is not None and kind.size is not None:
+            self.objects.extend(self._counter_runs(built, shape, kind, kind.size))
+        else:
+            self.objects.append(built)
         me = Placed(
             object_id, room, uy + src_height / 2, z + choice.height, kind.category, sub is not None
         )
@@ -183,7 +236,9 @@ class HouseObjects(ImportState):
             return holodeck_object_kind(node, raw_id, asset, self.hints, self.library, authored)
         return thor_object_kind(node, raw_id, asset)
 
-    def _choose(self, node: Node, object_id: str, asset: str, kind: Kind) -> AssetChoice:
+    def _choose(
+        self, node: Node, object_id: str, asset: str, kind: Kind, record: bool = True
+    ) -> AssetChoice:
         choice, warning = choose_asset(
             self.library,
             object_id=object_id,
@@ -198,7 +253,7 @@ class HouseObjects(ImportState):
         )
         if warning:
             self.warnings.append(f"{node.path}: {warning}")
-        if choice.substitution is not None:
+        if record and choice.substitution is not None:
             self.substitutions.append(choice.substitution)
         return choice
 

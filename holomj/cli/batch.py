@@ -206,7 +206,7 @@ def _print_table(outcome: BatchOutcome, out: Path) -> None:
     table.add_column("stable", justify="right", no_wrap=True, min_width=6)
     houses = any(r.kind == "house" for r in outcome.results)
     for name in ("moved", "left out", "substituted") if houses else ():
-        table.add_column(name, justify="right", no_wrap=True)
+        table.add_column(name, justify="right", no_wrap=True, min_width=len(name))
     table.add_column("seconds", justify="right", no_wrap=True, min_width=7)
     table.add_column("error", overflow="fold", min_width=20)
     skipped = set(outcome.skipped)

@@ -28,7 +28,9 @@ Conventions (see :mod:`holomj.importers.frames`)
   depth)`` -> holomj ``(depth, width, height)`` in the object's own frame). The stand-in asset
   is then scaled to that box within the limits of :mod:`holomj.importers.substitute` (else a
   box of that size). Other assetIds: the THOR type spelled by the assetId or the id, with a
-  typical size (no scaling); Holodeck objects keep their ``object_name`` and footprint. Ids of
+  typical size (no scaling). Holodeck objects (Objaverse uids) stand in with a model of their
+  own kind at their authored size (:mod:`holomj.importers.object_kinds`); THOR's L- and
+  U-shaped countertops become counter runs (:mod:`holomj.importers.counter_shapes`). Ids of
   the 0.0.1 schema (``4|2|4``, ``small|4|1``) never name a category.
 * An object's ProcTHOR ``position`` is the centre of its bounding box; holomj wants the centre of
   the footprint at the bottom, so ``z = unity y - height / 2`` with the height of the asset used.

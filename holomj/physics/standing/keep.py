@@ -48,6 +48,7 @@ class KeptHouse:
     imported: int  # objects in the house as imported
     changes: list[dict[str, Any]] = field(default_factory=list)
     rounds: int = 1
+    imported_positions: dict[str, tuple[float, float, float]] = field(default_factory=dict)
 
     @property
     def left_out(self) -> list[dict[str, Any]]:
@@ -67,8 +68,20 @@ class KeptHouse:
         return (self.imported - len(self.left_out)) / self.imported
 
     def to_report(self) -> dict[str, Any]:
-        """The fields this stage adds to ``import_report.json`` (besides the stand's own)."""
+        """The fields this stage adds to ``import_report.json`` (besides the stand's own):
+        every ``moved`` record with its ``from`` and ``to`` position (as imported, as
+        written), the counts, ``relocated`` and ``left_out`` (see the module docstring)."""
+        written = {o.id: o.position for o in self.outcome.scene.objects}
+        moved = [
+            {
+                **record,
+                "from": _rounded(self.imported_positions.get(record["object"])),
+                "to": _rounded(written.get(record["object"])),
+            }
+            for record in self.outcome.to_report()["moved"]
+        ]
         return {
+            "moved": moved,
             "objects_imported": self.imported,
             "objects_kept": self.imported - len(self.left_out),
             "kept_share": round(self.kept_share, 4),
@@ -125,7 +138,12 @@ def make_stand_keeping(
             )
             break
     changes = _changes(original, outcome.scene, why_moved, left)
-    return KeptHouse(outcome, len(scene.objects), changes, rounds)
+    positions = {k: o.position for k, o in original.items()}
+    return KeptHouse(outcome, len(scene.objects), changes, rounds, positions)
+
+
+def _rounded(position: tuple[float, float, float] | None) -> list[float] | None:
+    return None if position is None else [round(v, 4) for v in position]
 
 
 def _next_support(

@@ -34,20 +34,22 @@ from asset_pipeline.collider_audit import round_gap
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.procedural.articulated.links import Link, balanced, damped, unwrapped
 from asset_pipeline.procedural.assembly import (
-    CLEARANCE,
-    LICENSE,
     MIN_HULL_VERTICES,
-    PROUD,
-    SOURCE,
     AssetDesign,
-    _check_clearance,
-    _check_inside,
-    _collision_part,
-    _r,
-    _support_surface,
     centred_parts,
     covering_colliders,
     material_visuals,
+)
+from asset_pipeline.procedural.asset_records import (
+    CLEARANCE,
+    LICENSE,
+    PROUD,
+    SOURCE,
+    check_clearance,
+    check_inside,
+    collision_record,
+    meta_round,
+    surface_record,
 )
 from asset_pipeline.procedural.parts import Collider, Mesh, Part, Surface, Vec3
 from holomj.spec.assets import AssetMeta, CollisionPart, SupportSurface, VisualPart
@@ -93,8 +95,8 @@ def assemble_articulated(design: AssetDesign, expected_size: Vec3 | None = None)
     for key, group in groups.items():
         colliders[key], covered = covering_colliders(group.parts)
         gap = max(gap, covered.distance_m)
-        _check_inside(design.id, colliders[key], low, high)
-    _check_clearance(design.id, [p for p in parts if unwrapped(p)[2] is None])
+        check_inside(design.id, colliders[key], low, high)
+    check_clearance(design.id, [p for p in parts if unwrapped(p)[2] is None])
     _check_closed_gaps(design.id, groups, colliders)
     collision, hull_sizes = _collision(colliders, files)
     masses, carcass_mass = _masses(design, groups, collision)
@@ -118,7 +120,7 @@ def assemble_articulated(design: AssetDesign, expected_size: Vec3 | None = None)
         "id": design.id,
         "category": design.category,
         "description": design.description,
-        "size": [_r(v) for v in high - low],
+        "size": [meta_round(v) for v in high - low],
         "mass_kg": design.mass_kg,
         "density_kg_m3": round(carcass_mass / carcass_volume, 3),
         "friction": design.friction,
@@ -151,7 +153,7 @@ def _collision(
         prefix = f"{key}_" if key else ""
         for k, collider in enumerate(found):
             name = f"{prefix}hull_{k:02d}.obj"
-            part, hull = _collision_part(collider, name)
+            part, hull = collision_record(collider, name)
             if hull is not None:
                 files[name] = hull[0]
                 hull_sizes.append(len(hull[1]))
@@ -189,7 +191,7 @@ def _outer_surfaces(asset_id: str, parts: list[Part]) -> list[SupportSurface]:
     ]
     if stray:
         raise ValueError(f"{asset_id}: a moving part has an outer surface; wrap it in Inside")
-    return sorted((_support_surface(s) for s in outer), key=lambda s: (s.height, s.polygon))
+    return sorted((surface_record(s) for s in outer), key=lambda s: (s.height, s.polygon))
 
 
 def _centre(collision: list) -> Vec3:
@@ -238,15 +240,15 @@ def _part_record(link: Link, visual: list[VisualPart], collision: list, mass: fl
         "joint": {
             "name": link.joint_name,
             "type": joint.type,
-            "axis": [_r(v) for v in joint.axis],
-            "anchor": [_r(v) for v in joint.anchor],
-            "range": [_r(v) for v in joint.range],
+            "axis": [meta_round(v) for v in joint.axis],
+            "anchor": [meta_round(v) for v in joint.anchor],
+            "range": [meta_round(v) for v in joint.range],
             "closed": 0.0,
-            "damping": _r(joint.damping),
-            "frictionloss": _r(joint.frictionloss),
-            "armature": _r(joint.armature),
-            "stiffness": _r(joint.stiffness),
-            "springref": _r(joint.springref),
+            "damping": meta_round(joint.damping),
+            "frictionloss": meta_round(joint.frictionloss),
+            "armature": meta_round(joint.armature),
+            "stiffness": meta_round(joint.stiffness),
+            "springref": meta_round(joint.springref),
         },
         "mass_kg": float(f"{mass:.4g}"),
         "visual": [v.model_dump(mode="json") for v in visual],
@@ -255,10 +257,10 @@ def _part_record(link: Link, visual: list[VisualPart], collision: list, mass: fl
     if link.handle is not None:
         h = link.handle
         record["handle"] = {
-            "pos": [_r(v) for v in h.pos],
-            "quat": [_r(v) for v in h.quat],
-            "pull": [_r(v) for v in h.pull],
-            "length_m": _r(h.length),
+            "pos": [meta_round(v) for v in h.pos],
+            "quat": [meta_round(v) for v in h.quat],
+            "pull": [meta_round(v) for v in h.pull],
+            "length_m": meta_round(h.length),
         }
     return record
 
@@ -284,10 +286,10 @@ def _interior(asset_id: str, parts: Sequence[Part]) -> list[dict]:
                     f"{asset_id}: the interior surface at z = {surface.height:.3f} has only "
                     f"{clearance:.3f} m free above it"
                 )
-            record = _support_surface(surface).model_dump(mode="json")
+            record = surface_record(surface).model_dump(mode="json")
             record["part"] = link.name if link is not None else None
             record["behind"] = [joints[name] for name in behind]
-            record["clearance_m"] = _r(min(clearance, 10.0))
+            record["clearance_m"] = meta_round(min(clearance, 10.0))
             found.append(record)
     found.sort(key=lambda s: (s["part"] or "", s["height"], s["polygon"]))
     return found

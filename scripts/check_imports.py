@@ -37,8 +37,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
         ("holomj.errors", "holomj.spec", "holomj.atomic"),
     ),
     "holomj.layout": (
-        "pure geometry: floor plans, doors/windows, furniture solver, wall objects, "
-        "house shell and room furnishing from a plan",
+        "pure geometry: floor plans, doors/windows, furniture solver, wall objects",
         ("holomj.errors", "holomj.seeds", "holomj.spec", "holomj.library", "holomj.data"),
     ),
     "holomj.retrieval": (
@@ -54,6 +53,18 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.library",
             "holomj.layout",
             "holomj.retrieval",
+            "holomj.data",
+        ),
+    ),
+    "holomj.compose": (
+        "plan + assets -> SceneSpec: house shell, room furnishing, small-object choices, "
+        "the relation report",
+        (
+            "holomj.errors",
+            "holomj.seeds",
+            "holomj.spec",
+            "holomj.library",
+            "holomj.layout",
             "holomj.data",
         ),
     ),
@@ -73,7 +84,6 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.spec",
             "holomj.library",
             "holomj.mjcf",
-            "holomj.layout",
         ),
     ),
     "holomj.robots": (
@@ -137,6 +147,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.spec",
             "holomj.library",
             "holomj.layout",
+            "holomj.compose",
             "holomj.retrieval",
             "holomj.plan",
             "holomj.importers",

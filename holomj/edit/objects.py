@@ -43,8 +43,8 @@ from holomj.edit.state import (
 )
 from holomj.errors import HolomjError
 from holomj.layout.constraints import PHRASES, RELATION_WEIGHT, normalize_phrase
+from holomj.layout.furniture_rules import FIXED_CATEGORIES, WALL_KINDS, object_id
 from holomj.layout.geometry import LAYOUT_MARGIN_M
-from holomj.layout.room_furnishing import FIXED_CATEGORIES, WALL_KINDS, object_id
 from holomj.layout.wall_objects import FloorItem, WallObjectRequest, place_wall_objects
 from holomj.library.store import AssetLibrary
 from holomj.plan.knowledge import knowledge_base

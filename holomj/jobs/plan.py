@@ -21,7 +21,7 @@ class PlanOptions:
     """What the plan stage needs: the seed, which planner, the text model and the LLM server."""
 
     seed: int = 0
-    planner: Literal["offline", "llm"] = "offline"
+    planner: str = "offline"  # checked by check_planner
     text_model: Path | None = None
     llm_base_url: str | None = None
     llm_model: str | None = None

@@ -113,7 +113,6 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
             "holomj.library",
             "holomj.mjcf",
             "holomj.physics",
-            "holomj.robots",
         ),
     ),
     "holomj.edit": (

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from shapely import affinity
@@ -81,7 +81,68 @@ def furnish_room(
     windows = [w for w in context.windows if room.id in w.rooms]
 
     metas = {instance: library.get(a).meta for instance, a in assets.floor.items()}
-    runs: list[tuple[LayoutResult, dict[str, Any]]] = []  # each layout's counter run, if any
+    solve, solves = _room_solver(
+        plan_room, room, context, assets, library, seed, time_limit_s, request
+    )
+    result = solve(windows)
+    windows, result = _make_room_for_defining(
+        plan_room, room, context, assets.floor, library, windows, result, solve, out
+    )
+    result = _make_room_for_relations(plan_room, assets, metas, windows, result, solve, out)
+    out.layout = _layout_record(result)
+    run, grid = solves.records_of(result)
+    if run is not None:
+        out.layout["counter_run"] = run
+        windows, notes = run_windows(windows, run)
+        out.changes.extend(f"{room.id}: {note}" for note in notes)
+    if grid is not None:
+        out.layout["desk_grid"] = grid
+    out.windows = windows
+    out.relations = relation_verdicts(plan_room, result.constraints)
+    out.warnings.extend(result.warnings)
+    for item in result.unplaced:
+        out.unplaced.append({"object": item.id, "stage": "layout", "reason": item.reason})
+    floor_items = _place_floor_objects(plan_room, room, assets.floor, result, library, out)
+    _lay_rugs(plan_room, room, context, assets.floor, result, library, out)
+    hung_for = front_lookers(plan_room, grid)  # boards hang where the front row looks
+    hang_wall_objects(
+        hung_for, room, context, windows, assets.wall, floor_items, library, seed, out
+    )
+    stand_unhung_tvs(plan_room, room, out, library)
+    hang_from_ceiling(plan_room, room, context, assets.ceiling, floor_items, library, out)
+    return out
+
+
+@dataclass(frozen=True)
+class _Solves:
+    """Every layout solved for a room, with the counter run and desk grid each was made with."""
+
+    runs: list[tuple[LayoutResult, dict[str, Any]]] = field(default_factory=list)
+    grids: list[tuple[LayoutResult, dict[str, Any] | None]] = field(default_factory=list)
+
+    def records_of(
+        self, result: LayoutResult
+    ) -> tuple[dict[str, Any] | None, dict[str, Any] | None]:
+        """The counter run and desk grid of the solve that gave ``result`` (None: none)."""
+        run = next((record for solved, record in self.runs if solved is result), None)
+        grid = next((record for solved, record in self.grids if solved is result), None)
+        return run, grid
+
+
+def _room_solver(
+    plan_room: PlanRoom,
+    room: Room,
+    context: RoomContext,
+    assets: RoomAssets,
+    library: AssetLibrary,
+    seed: int,
+    time_limit_s: float,
+    request: str,
+) -> tuple[Callable[..., LayoutResult], _Solves]:
+    """``solve(windows, assets=assets)``: the room's layout with those windows and floor assets
+    (a counter run, desks in rows, the rest by the solver), and the record of every solve."""
+    metas = {instance: library.get(a).meta for instance, a in assets.floor.items()}
+    solves = _Solves()
 
     def plain(problem: RoomProblem) -> LayoutResult:
         return solve_room(
@@ -92,7 +153,6 @@ def furnish_room(
         )
 
     grid_log: list[dict[str, Any] | None] = []  # the desk grid of each gridded solve
-    grids: list[tuple[LayoutResult, dict[str, Any] | None]] = []
 
     def gridded(problem: RoomProblem) -> LayoutResult:
         # desks and their seats in rows (holomj.layout.desk_grid), inside the counter run
@@ -123,38 +183,11 @@ def furnish_room(
             wall_height=context.wall_height,
         )
         if run is not None:
-            runs.append((result, run))
-        grids.append((result, grid_log[-1] if grid_log else None))  # the last solve is used
+            solves.runs.append((result, run))
+        solves.grids.append((result, grid_log[-1] if grid_log else None))
         return result
 
-    result = solve(windows)
-    windows, result = _make_room_for_defining(
-        plan_room, room, context, assets.floor, library, windows, result, solve, out
-    )
-    result = _make_room_for_relations(plan_room, assets, metas, windows, result, solve, out)
-    out.layout = _layout_record(result)
-    run = next((record for solved, record in runs if solved is result), None)
-    if run is not None:
-        out.layout["counter_run"] = run
-        windows, notes = run_windows(windows, run)
-        out.changes.extend(f"{room.id}: {note}" for note in notes)
-    grid = next((record for solved, record in grids if solved is result), None)
-    if grid is not None:
-        out.layout["desk_grid"] = grid
-    out.windows = windows
-    out.relations = relation_verdicts(plan_room, result.constraints)
-    out.warnings.extend(result.warnings)
-    for item in result.unplaced:
-        out.unplaced.append({"object": item.id, "stage": "layout", "reason": item.reason})
-    floor_items = _place_floor_objects(plan_room, room, assets.floor, result, library, out)
-    _lay_rugs(plan_room, room, context, assets.floor, result, library, out)
-    hung_for = front_lookers(plan_room, grid)  # boards hang where the front row looks
-    hang_wall_objects(
-        hung_for, room, context, windows, assets.wall, floor_items, library, seed, out
-    )
-    stand_unhung_tvs(plan_room, room, out, library)
-    hang_from_ceiling(plan_room, room, context, assets.ceiling, floor_items, library, out)
-    return out
+    return solve, solves
 
 
 def _place_floor_objects(

@@ -165,12 +165,11 @@ def write_scene_folder(
 
 def robot_learning_files(compiled: CompiledScene) -> dict[str, str | bytes]:
     """``objects.json``, ``navmap.json``, ``navmap.png`` and (with a robot) ``robot.json``."""
-    from holomj.formats.navmap import build_navmap
-    from holomj.formats.objects_json import objects_record
+    from holomj.jobs.robot_learning import build_navmap, objects_json
 
     navmap = build_navmap(compiled)
     files: dict[str, str | bytes] = {
-        OBJECTS_JSON: dump_json(objects_record(compiled)),
+        OBJECTS_JSON: dump_json(objects_json(compiled)),
         NAVMAP_JSON: dump_json(navmap.to_json()),
         NAVMAP_PNG: navmap.to_png(),
     }

@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from holomj.compose.room_assets import AssetChooser, on_demand_record
+from holomj.compose.room_assets import AssetChooser, Pick, on_demand_record
 from holomj.errors import HolomjError, SpecError
 from holomj.library.store import AssetLibrary
 from holomj.seeds import stage_rng
@@ -164,14 +164,7 @@ def _choose_for(
             continue
         for pick in chosen:
             on_top.append((pick.asset_id, 1))
-            picks.append(
-                {
-                    "receptacle": receptacle_id,
-                    "name": small.name,
-                    "asset": pick.asset_id,
-                    **on_demand_record(pick),
-                }
-            )
+            picks.append(_pick_record(receptacle_id, small.name, pick))
     inner, missed = _inside_requests(
         scene, library, chooser, rules, seed, receptacle_id, failures, picks
     )
@@ -242,13 +235,15 @@ def _inside_requests(
             missed += 1
             continue
         inner.append((pick.asset_id, 1))
-        picks.append(
-            {
-                "receptacle": receptacle_id,
-                "name": name,
-                "asset": pick.asset_id,
-                "inside": True,
-                **on_demand_record(pick),
-            }
-        )
+        picks.append(_pick_record(receptacle_id, name, pick, inside=True))
     return inner, missed
+
+
+def _pick_record(
+    receptacle_id: str, name: str, pick: Pick, *, inside: bool = False
+) -> dict[str, Any]:
+    """The ``generate.json`` record of one small object's pick."""
+    record: dict[str, Any] = {"receptacle": receptacle_id, "name": name, "asset": pick.asset_id}
+    if inside:
+        record["inside"] = True
+    return {**record, **on_demand_record(pick)}

@@ -104,7 +104,7 @@ def compile_file(
 
     timings: dict[str, float] = {}
     checked_profile = check_profile(profile)
-    prepare_output(out, overwrite)
+    prepared = prepare_output(out, overwrite)
     start = time.perf_counter()
     library = AssetLibrary.open(library_path)
     result = load_scene_input(Path(input_path), library, fmt)
@@ -133,9 +133,7 @@ def compile_file(
         if stand.report is not None:
             extra[REPORT_JSON] = stand.report.model_dump(mode="json")
     start = time.perf_counter()
-    write_scene_folder(
-        compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json, **extra}
-    )
+    write_scene_folder(compiled, prepared, extra_json={IMPORT_REPORT: report_json, **extra})
     timings["export"] = time.perf_counter() - start
     return CompileReport(
         input=str(input_path),

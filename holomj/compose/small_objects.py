@@ -123,9 +123,10 @@ def choose_small_objects(
             for o in scene.objects
             if o.id not in listed and _interior_category(library, o.asset) in rules
         ]
+    choosing = _Choosing(scene, library, chooser, rules, seed)
     drops, picks = [], []
     for receptacle_id, plan_obj in targets:
-        drop, chosen = _choose_for(scene, library, chooser, rules, seed, receptacle_id, plan_obj)
+        drop, chosen = choosing.for_receptacle(receptacle_id, plan_obj)
         picks += chosen
         if plan_obj is None and not drop.inside and not drop.failures:
             continue  # storage the draw left empty: nothing to report
@@ -133,46 +134,77 @@ def choose_small_objects(
     return SmallObjectChoices(tuple(drops), tuple(picks))
 
 
-def _choose_for(
-    scene: SceneSpec,
-    library: AssetLibrary,
-    chooser: AssetChooser,
-    rules: dict[str, InsideRule],
-    seed: int,
-    receptacle_id: str,
-    plan_obj: PlanObject | None,
-) -> tuple[ReceptacleDrop, list[dict[str, Any]]]:
-    """One receptacle's drop and the records of its picks."""
-    rng = stage_rng(seed, "small_objects", receptacle_id)
-    on_top: list[Request] = []
-    failures: list[dict[str, str]] = []
-    picks: list[dict[str, Any]] = []
-    unserved = 0
-    for small in plan_obj.on_top if plan_obj is not None else ():
-        try:
-            chosen = chooser.choose(
-                small.description.strip() or small.name,
-                quantity=small.quantity,
-                variance=small.variance,
-                rng=rng,
-                placement="object",
-                category=small.category,
-            )
-        except HolomjError as err:
-            failures.append({"object": small.name, "reason": err.one_line()})
-            unserved += small.quantity
-            continue
-        for pick in chosen:
-            on_top.append((pick.asset_id, 1))
-            picks.append(_pick_record(receptacle_id, small.name, pick))
-    inner, missed = _inside_requests(
-        scene, library, chooser, rules, seed, receptacle_id, failures, picks
-    )
-    on_top, inner, unfit = _where_they_fit(scene, library, receptacle_id, on_top, inner, failures)
-    drop = ReceptacleDrop(
-        receptacle_id, tuple(on_top), tuple(inner), tuple(failures), unserved + missed + unfit, rng
-    )
-    return drop, picks
+@dataclass(frozen=True)
+class _Choosing:
+    """What every receptacle's choices read: the scene, the library, the chooser, the inside
+    rules (empty: nothing inside) and the seed."""
+
+    scene: SceneSpec
+    library: AssetLibrary
+    chooser: AssetChooser
+    rules: dict[str, InsideRule]
+    seed: int
+
+    def for_receptacle(
+        self, receptacle_id: str, plan_obj: PlanObject | None
+    ) -> tuple[ReceptacleDrop, list[dict[str, Any]]]:
+        """One receptacle's drop and the records of its picks."""
+        rng = stage_rng(self.seed, "small_objects", receptacle_id)
+        on_top: list[Request] = []
+        failures: list[dict[str, str]] = []
+        picks: list[dict[str, Any]] = []
+        unserved = 0
+        for small in plan_obj.on_top if plan_obj is not None else ():
+            try:
+                chosen = self.chooser.choose(
+                    small.description.strip() or small.name,
+                    quantity=small.quantity,
+                    variance=small.variance,
+                    rng=rng,
+                    placement="object",
+                    category=small.category,
+                )
+            except HolomjError as err:
+                failures.append({"object": small.name, "reason": err.one_line()})
+                unserved += small.quantity
+                continue
+            for pick in chosen:
+                on_top.append((pick.asset_id, 1))
+                picks.append(_pick_record(receptacle_id, small.name, pick))
+        inner, missed = self._inside(receptacle_id, failures, picks)
+        on_top, inner, unfit = _where_they_fit(
+            self.scene, self.library, receptacle_id, on_top, inner, failures
+        )
+        unserved += missed + unfit
+        drop = ReceptacleDrop(
+            receptacle_id, tuple(on_top), tuple(inner), tuple(failures), unserved, rng
+        )
+        return drop, picks
+
+    def _inside(
+        self, receptacle_id: str, failures: list[dict[str, str]], picks: list[dict[str, Any]]
+    ) -> tuple[list[Request], int]:
+        """The assets drawn to go inside ``receptacle_id`` (none without a rule for it), and
+        how many drawn objects found no asset (each reported in ``failures``)."""
+        obj = next((o for o in self.scene.objects if o.id == receptacle_id), None)
+        category = _interior_category(self.library, obj.asset) if obj is not None else None
+        if category is None or category not in self.rules:
+            return [], 0
+        rng = stage_rng(self.seed, "small_objects_inside", receptacle_id)
+        inner: list[Request] = []
+        missed = 0
+        for name in self.rules[category].draw(rng):
+            try:
+                (pick,) = self.chooser.choose(
+                    name, quantity=1, variance="same", rng=rng, placement="object", category=name
+                )
+            except HolomjError as err:
+                failures.append({"object": name, "reason": err.one_line()})
+                missed += 1
+                continue
+            inner.append((pick.asset_id, 1))
+            picks.append(_pick_record(receptacle_id, name, pick, inside=True))
+        return inner, missed
 
 
 def _where_they_fit(
@@ -204,39 +236,6 @@ def _interior_category(library: AssetLibrary, asset_id: str) -> str | None:
     if meta.articulation is None or not meta.articulation.interior:
         return None
     return meta.category
-
-
-def _inside_requests(
-    scene: SceneSpec,
-    library: AssetLibrary,
-    chooser: AssetChooser,
-    rules: dict[str, InsideRule],
-    seed: int,
-    receptacle_id: str,
-    failures: list[dict[str, str]],
-    picks: list[dict[str, Any]],
-) -> tuple[list[Request], int]:
-    """The assets drawn to go inside ``receptacle_id`` (none without a rule for it), and how
-    many drawn objects found no asset."""
-    obj = next((o for o in scene.objects if o.id == receptacle_id), None)
-    category = _interior_category(library, obj.asset) if obj is not None else None
-    if category is None or category not in rules:
-        return [], 0
-    rng = stage_rng(seed, "small_objects_inside", receptacle_id)
-    inner: list[Request] = []
-    missed = 0
-    for name in rules[category].draw(rng):
-        try:
-            (pick,) = chooser.choose(
-                name, quantity=1, variance="same", rng=rng, placement="object", category=name
-            )
-        except HolomjError as err:
-            failures.append({"object": name, "reason": err.one_line()})
-            missed += 1
-            continue
-        inner.append((pick.asset_id, 1))
-        picks.append(_pick_record(receptacle_id, name, pick, inside=True))
-    return inner, missed
 
 
 def _pick_record(

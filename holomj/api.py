@@ -72,9 +72,7 @@ def generate(
     from holomj.jobs.generate import GenerateOptions, generate_scene
 
     root = library.root if isinstance(library, _StoreLibrary) else library
-    checked = GenerateOptions.from_keywords(
-        library=None if root is None else Path(root), **options
-    )
+    checked = GenerateOptions.from_keywords(library=None if root is None else Path(root), **options)
     return generate_scene(prompt, Path(out), checked, listener=listener)
 
 

@@ -125,7 +125,6 @@ def _furnish_rooms(
             library,
             seed,
             time_limit_s=layout_time_s,
-            request=plan.prompt,
         )
         for plan_room in plan.rooms
     ]

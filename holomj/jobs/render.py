@@ -30,15 +30,17 @@ import mujoco
 
 from holomj.atomic import replace_folder, write_file
 from holomj.errors import ExportError, FormatError, HolomjError, InputError
-from holomj.file_names import IMPORT_REPORT, PLAN_JSON, RENDERS_DIR, REPORT_HTML, REPORT_JSON
-from holomj.jobs.folder import (
+from holomj.file_names import (
     ASSETS_DIR,
+    IMPORT_REPORT,
+    PLAN_JSON,
+    RENDERS_DIR,
+    REPORT_HTML,
+    REPORT_JSON,
     SCENE_JSON,
     SCENE_XML,
-    open_library,
-    read_json_report,
-    read_scene,
 )
+from holomj.jobs.folder import open_library, read_json_report, read_scene
 from holomj.mjcf.compiler import CompiledScene
 from holomj.rendering import gl
 from holomj.rendering.pipeline import (

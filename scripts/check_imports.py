@@ -64,7 +64,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.layout": (
         "pure geometry: floor plans, doors/windows, furniture solver, wall objects",
-        _holomj("seeds spec library data"),
+        _holomj("spec data"),
     ),
     "holomj.retrieval": (
         "asset and material scoring (text, visual, size), embedding cache",
@@ -76,7 +76,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.compose": (
         "plan + assets -> SceneSpec: house shell, room furnishing, small objects, relation report",
-        _holomj("seeds spec library layout retrieval data"),
+        _holomj("seeds spec library layout data"),
     ),
     "holomj.importers": (
         "ProcTHOR/Holodeck house JSON and SceneDef -> SceneSpec",
@@ -88,7 +88,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.physics": (
         "penetration audit, settle, stability, repair, spawn-and-drop (in memory)",
-        _holomj("seeds spec library mjcf layout data"),
+        _holomj("spec library mjcf"),
     ),
     "holomj.robots": (
         "robot registry, preparation, floor spot, attaching (in memory)",
@@ -104,7 +104,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.formats": (
         "output formats in memory: objects.json, navigation map, summaries, GLB, USD, URDF",
-        _holomj("spec mjcf physics robots"),
+        _holomj("spec mjcf physics"),
     ),
     "holomj.edit": (
         "scene edit operations applied in memory (add, move, remove, replace, ...)",
@@ -133,7 +133,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "holomj.api": ("the Python API re-exported from holomj", _holomj("spec library jobs")),
     "holomj.cli": (
         "thin typer commands: parse options, call one job, print",
-        _holomj("api seeds spec jobs batch importers"),  # importers: the formats, for --format
+        _holomj("seeds spec jobs batch importers"),  # importers: the formats, for --format
     ),
     "holomj.__main__": ("python -m holomj", _holomj("cli")),
     "holomj": ("the package root: version and the lazy API", _holomj("api")),
@@ -200,7 +200,7 @@ GROUPS: dict[str, tuple[str, ...]] = {
     ),
 }
 # packages in the map before their first module exists: their imports are not held to be used
-PLANNED = ("holomj.compose",)
+PLANNED: tuple[str, ...] = ()
 # (importer, imported): a package under the first may import one under the second only inside
 # functions (``import holomj`` stays light: no CoACD, trimesh or procedural generators)
 LAZY_ONLY = (("holomj", "asset_pipeline"),)

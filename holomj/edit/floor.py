@@ -3,7 +3,7 @@
 The layout solver lays out a whole room; an edit must not move what it does not touch, so a new
 (or moved, or replaced) floor object is placed by a search over free floor poses instead: every
 centre on the layout's 5 cm grid and every quarter turn (or the one yaw asked), in the room's
-layout polygon (inset from the walls as :mod:`holomj.layout.room_furnishing` does it). The
+layout polygon (inset from the walls as :mod:`holomj.compose.room_furnishing` does it). The
 checks are the layout's hard rules, in metres, against the real footprints of everything in the
 room (turned by any yaw):
 
@@ -52,8 +52,8 @@ from holomj.edit.footprints import (
 from holomj.edit.state import Refused
 from holomj.layout import geometry as geo
 from holomj.layout.constraints import Constraint
+from holomj.layout.furniture_rules import DOOR_CLEARANCE_M, WALKER_RADIUS_M
 from holomj.layout.geometry import LAYOUT_MARGIN_M
-from holomj.layout.room_furnishing import DOOR_CLEARANCE_M, WALKER_RADIUS_M
 from holomj.layout.room_problem import (
     LayoutObject,
     LayoutSettings,

@@ -114,7 +114,7 @@ def compile_file(
     """
     timings: dict[str, float] = {}
     checked_profile = check_profile(profile)
-    prepare_output(out, overwrite)
+    prepared = prepare_output(out, overwrite)
     start = time.perf_counter()
     library, result, objathor_note = _import(Path(input_path), fmt, library_path, objathor)
     timings["import"] = time.perf_counter() - start
@@ -138,7 +138,7 @@ def compile_file(
     stand_record = None if stand is None else _stand_record(stand, refusal, allow_invalid, strict)
     files = _report_files(result, sim_warnings, stand, stand_record)
     start = time.perf_counter()
-    write_scene_folder(compiled, out, overwrite=overwrite, extra_json=files)
+    write_scene_folder(compiled, prepared, extra_json=files)
     timings["export"] = time.perf_counter() - start
     return CompileReport(
         input=str(input_path),

@@ -31,30 +31,14 @@ from typing import TYPE_CHECKING, Any
 
 from holomj.evaluation.text import find_words, main_phrase, normalise, slug
 from holomj.evaluation.vocabulary import Vocabulary
+from holomj.spec.relations import RELATION_KINDS
 
 if TYPE_CHECKING:
     from holomj.spec.plan import PlanObject, PlanRoom, ScenePlan
 
 # plan relation kind -> (annotation relation, target place or None for the plan's target)
 RELATION_MAP: dict[str, tuple[str, str | None]] = {
-    "corner": ("in corner", ""),
-    "wall": ("against wall", "wall"),
-    "middle": ("middle", ""),
-    "under_window": ("under window", "window"),
-    "by_window": ("next to", "window"),
-    "by_door": ("near", "door"),
-    "facing_window": ("facing", "window"),
-    "facing_door": ("facing", "door"),
-    "adjacent_to": ("next to", None),
-    "both_sides": ("next to", None),
-    "near": ("near", None),
-    "in_front_of": ("in front of", None),
-    "behind": ("behind", None),
-    "facing": ("facing", None),
-    "across_from": ("across from", None),
-    "around": ("around", None),
-    "on": ("on", None),
-    "above": ("above", None),
+    f.kind: f.judged_as for f in RELATION_KINDS if f.judged_as is not None
 }
 ATTRIBUTE_GAP_WORDS = 3  # "a red leather armchair": the word at most this many words before
 

@@ -60,10 +60,9 @@ ConstraintKind = Literal[
     "face_same_as",
     "face_opposite_to",
 ]
-# Global kinds that place an object by the room's corners, windows or doors.
-PLACE_KINDS = frozenset(
-    {"corner", "centre", "under_window", "by_window", "by_door", "facing_window", "facing_door"}
-)
+# Global kinds that place an object by the room's windows or doors, and by its corners too.
+OPENING_KINDS = frozenset({"under_window", "by_window", "by_door", "facing_window", "facing_door"})
+PLACE_KINDS = frozenset({"corner", "centre"}) | OPENING_KINDS
 GLOBAL_KINDS = frozenset({"edge", "middle"}) | PLACE_KINDS
 ALL_KINDS: tuple[str, ...] = ConstraintKind.__args__  # type: ignore[attr-defined]
 

@@ -148,8 +148,8 @@ class Scorer:
                 }
             )
         for spec in self.spec.get("objects", []):
-            found = self.instances(spec["name"], spec.get("room"), spec)
-            n = len(found)
+            objects = self.instances(spec["name"], spec.get("room"), spec)
+            n = len(objects)
             where = f" in {spec.get('room_id') or spec['room']}" if spec.get("room") else ""
             out.append(
                 {
@@ -158,7 +158,7 @@ class Scorer:
                     "name": spec["name"],
                     "found": n,
                     "held": self._count_ok(spec["count"], n),
-                    "reason": f"{n} found{where} ({', '.join(o.id for o in found[:8])}), "
+                    "reason": f"{n} found{where} ({', '.join(o.id for o in objects[:8])}), "
                     f"expected {self._count_text(spec['count'])}",
                 }
             )

@@ -19,7 +19,7 @@ if TYPE_CHECKING:
 
 def default_vocabulary_file() -> Path:
     """The shipped vocabulary file."""
-    return Path(str(resources.files("holomj.data").joinpath("evaluation", "vocabulary.json")))
+    return Path(str(resources.files("holomj.data").joinpath("evaluation/vocabulary.json")))
 
 
 class Vocabulary:

@@ -23,6 +23,7 @@ from functools import cache
 from importlib import resources
 
 from holomj.importers.ids import sanitise
+from holomj.spec.categories import normalise_category
 from holomj.spec.materials import BUILTIN_MATERIALS, Material
 
 # (keywords, material): the first rule with a keyword found in the lower-cased name wins.
@@ -75,7 +76,7 @@ def procthor_table() -> dict[str, str]:
 
 
 def _key(name: str, drop_number: bool = False) -> str:
-    key = "".join(ch for ch in name.lower() if ch.isalnum())
+    key = normalise_category(name)
     return key.rstrip("0123456789") or key if drop_number else key
 
 

@@ -41,21 +41,12 @@ an opening original gets a stand-in that opens whenever the library has one.
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass
-from functools import cache
-from importlib import resources
 
 from holomj.importers.result import Substitution
-from holomj.library.store import (
-    BUILTIN_BOX,
-    AssetLibrary,
-    LibraryAsset,
-    category_aliases,
-    normalise_category,
-    size_distance,
-)
+from holomj.library.store import BUILTIN_BOX, AssetLibrary, LibraryAsset, size_distance
+from holomj.spec.categories import category_aliases, category_size, normalise_category
 
 FALLBACK_SIZE = (0.5, 0.5, 0.5)
 SCALE_MIN = 0.5  # smallest per-axis factor applied to a stand-in
@@ -65,23 +56,6 @@ MIN_EXTENT = 0.005  # metres: thinner source extents (a credit card's 4.5 mm) ar
 
 Size = tuple[float, float, float]
 Scale = float | tuple[float, float, float]
-
-
-@cache
-def category_sizes() -> dict[str, Size]:
-    """Typical sizes (x = depth, y = width, z = height, metres) by normalised category."""
-    text = resources.files("holomj.data").joinpath("category_sizes.json").read_text("utf-8")
-    table = json.loads(text)
-    return {
-        normalise_category(name): (float(v["depth"]), float(v["width"]), float(v["height"]))
-        for name, v in table.items()
-        if not name.startswith("_")
-    }
-
-
-def category_size(category: str) -> Size | None:
-    """The typical size of a category, if the table knows it."""
-    return category_sizes().get(normalise_category(category))
 
 
 @dataclass(frozen=True)

@@ -269,7 +269,7 @@ def _build(
     warnings: list[str], where: str, items: list[dict[str, str]], raw: str
 ) -> list[Constraint]:
     try:
-        return [Constraint(**item, source=raw.strip()[:1000]) for item in items]
+        return [Constraint.model_validate({**item, "source": raw.strip()[:1000]}) for item in items]
     except ValidationError as err:
         problem = err.errors(include_url=False)[0].get("msg", "invalid")
         warnings.append(f"{where}: {raw.strip()!r} ignored ({problem})")

@@ -60,9 +60,10 @@ def relation_constraints(plan_room: PlanRoom, present: Iterable[str]) -> list[Co
         if obj not in here or (target is not None and target not in here) or obj == target:
             return
         for kind in kinds:
-            c = Constraint(
-                object=obj, kind=kind, target=target, weight=RELATION_WEIGHT, source=source
-            )
+            c = Constraint.model_validate(
+                {"object": obj, "kind": kind, "target": target, "weight": RELATION_WEIGHT,
+                 "source": source}
+            )  # fmt: skip
             if c.key not in seen:
                 seen.add(c.key)
                 out.append(c)

@@ -26,7 +26,7 @@ the :class:`EditReport`. Nothing in an operations file is ever executed.
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Final, Literal
 
 from pydantic import BaseModel, Field, RootModel, model_validator
 
@@ -42,7 +42,7 @@ from holomj.spec.base import (
 )
 from holomj.spec.relations import EDIT_OBJECT_KINDS, EDIT_PLACE_KINDS, EditRelationKind
 
-EDIT_SCHEMA_VERSION = "1.0"
+EDIT_SCHEMA_VERSION: Final = "1.0"
 MAX_OPERATIONS = 50  # per file (and per refine round)
 MAX_RELATIONS = 8
 MAX_ADD_ON = 10

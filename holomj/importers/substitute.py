@@ -2,13 +2,13 @@
 
 1. The requested asset id is in the library: use it as it is.
 2. Otherwise an asset of the object's category, then of the category's aliases
-   (``holomj/data/category_aliases.json``), then of the caller's stand-in categories (for THOR
+   (``holomj/data/category_facts.json``), then of the caller's stand-in categories (for THOR
    types, ``holomj/data/thor_types.json``), closest in size.
 3. Otherwise ``builtin:box`` scaled to the object's size.
 
 The object's size (x = depth, y = width, z = height, metres, in the object's own frame) is what
 the caller knows from the source (the AI2-THOR asset table, a Holodeck footprint), else a typical
-size of its category from ``holomj/data/category_sizes.json``; unknown categories get a 0.5 m
+size of its category from ``holomj/data/category_facts.json``; unknown categories get a 0.5 m
 cube and a warning.
 
 Fitting (``fit=True``; the importers ask for it when the size is the original's true size)

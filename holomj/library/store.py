@@ -112,7 +112,7 @@ class AssetLibrary:
         """The asset of ``category`` whose bounding box is closest in size (log-ratio distance).
 
         When the library has no asset of that exact category, the category's aliases
-        (``holomj/data/category_aliases.json``, e.g. ``HousePlant`` -> ``potted_plant``) are tried
+        (``holomj/data/category_facts.json``, e.g. ``HousePlant`` -> ``potted_plant``) are tried
         in order. A rotation by 90° about Z is allowed, so a 2 x 1 m bed matches a 1 x 2 m one.
         """
         for name in [category, *category_aliases().get(normalise_category(category), [])]:

@@ -49,7 +49,7 @@ from holomj.spec.categories import asset_axes, normalise_category
 SIMILARITY_FLOOR = 0.8
 """Least text cosine between two category names for one to stand in for the other (with the
 default MiniLM encoder, couch/sofa and bookcase/bookshelf pass; treadmill/desk, 0.2-0.4, and
-kettlebell/pot do not). Listed aliases (``category_aliases.json``) always pass."""
+kettlebell/pot do not). Listed stand-ins (``category_facts.json``) always pass."""
 SYNTH_STYLES = 4
 """Style seeds an asset made on demand is drawn from (the run's generator picks one)."""
 VARIED_POOL = 3

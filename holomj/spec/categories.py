@@ -4,10 +4,10 @@ typical size.
 - :func:`normalise_category` is the one name normalisation of categories (and of the other
   tables keyed by name, materials included): the library, retrieval, the importers, the
   procedural registries and the physical table all compare names through it.
-- :func:`category_aliases` reads ``holomj/data/category_aliases.json`` (other names of a
-  category, the categories that may stand in for it, best first).
-- :func:`category_sizes` reads ``holomj/data/category_sizes.json`` (typical sizes of
-  ProcTHOR/Holodeck object types), in the asset axes (x = depth, y = width, z = height).
+- ``holomj/data/category_facts.json`` holds, per name the library may not hold (ProcTHOR
+  object types, plurals, near-synonyms), the categories that may stand in for it
+  (:func:`category_aliases`, best first) and its typical size (:func:`category_sizes`, in the
+  asset axes: x = depth, y = width, z = height).
 
 Sizes: a plan (and the planner's knowledge base) gives an object's size as (width, depth,
 height); an asset's, a generator's and these tables' are (x = depth, y = width, z = height).
@@ -22,6 +22,7 @@ from importlib import resources
 from typing import Any
 
 Size = tuple[float, float, float]
+FACTS_FILE = "category_facts.json"
 
 
 def normalise_category(category: str) -> str:
@@ -41,27 +42,27 @@ def plan_axes(asset_size: Size) -> Size:
     return (width, depth, height)
 
 
-def _table(name: str) -> dict[str, Any]:
-    """A category table of ``holomj/data`` without its ``_comment`` entries."""
-    text = resources.files("holomj.data").joinpath(name).read_text(encoding="utf-8")
+@functools.cache
+def _facts() -> dict[str, dict[str, Any]]:
+    """``category_facts.json`` by normalised name, without its ``_comment``."""
+    text = resources.files("holomj.data").joinpath(FACTS_FILE).read_text(encoding="utf-8")
     table: dict[str, Any] = json.loads(text)
-    return {k: v for k, v in table.items() if not k.startswith("_")}
+    return {normalise_category(k): v for k, v in table.items() if not k.startswith("_")}
 
 
 @functools.cache
 def category_aliases() -> dict[str, list[str]]:
-    """Normalised category name -> categories that may stand in for it, best first."""
-    return {normalise_category(k): list(v) for k, v in _table("category_aliases.json").items()}
+    """Normalised name -> categories that may stand in for it, best first."""
+    return {k: list(v["stand_ins"]) for k, v in _facts().items() if "stand_ins" in v}
 
 
 @functools.cache
 def category_sizes() -> dict[str, Size]:
-    """Typical sizes (x = depth, y = width, z = height, metres) by normalised category."""
+    """Typical sizes (x = depth, y = width, z = height, metres) by normalised name."""
     return {
-        normalise_category(name): asset_axes(
-            (float(v["width"]), float(v["depth"]), float(v["height"]))
-        )
-        for name, v in _table("category_sizes.json").items()
+        k: asset_axes((float(s["width"]), float(s["depth"]), float(s["height"])))
+        for k, v in _facts().items()
+        if (s := v.get("size")) is not None
     }
 
 

@@ -30,7 +30,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Annotated, Literal
+from typing import Annotated, Literal, get_args
 
 from pydantic import Field, ValidationError, model_validator
 
@@ -64,7 +64,7 @@ ConstraintKind = Literal[
 OPENING_KINDS = frozenset({"under_window", "by_window", "by_door", "facing_window", "facing_door"})
 PLACE_KINDS = frozenset({"corner", "centre"}) | OPENING_KINDS
 GLOBAL_KINDS = frozenset({"edge", "middle"}) | PLACE_KINDS
-ALL_KINDS: tuple[str, ...] = ConstraintKind.__args__  # type: ignore[attr-defined]
+ALL_KINDS: tuple[str, ...] = get_args(ConstraintKind)
 
 # The phrase that writes each kind in the text form.
 KIND_PHRASE: dict[str, str] = {

@@ -51,7 +51,7 @@ from holomj.edit.footprints import (
 )
 from holomj.edit.state import Refused
 from holomj.layout import geometry as geo
-from holomj.layout.constraints import Constraint
+from holomj.layout.constraints import OPENING_KINDS, Constraint
 from holomj.layout.furniture_rules import DOOR_CLEARANCE_M, WALKER_RADIUS_M
 from holomj.layout.geometry import LAYOUT_MARGIN_M
 from holomj.layout.room_problem import (
@@ -69,7 +69,6 @@ CLEARANCE_M = 0.05
 FRONT_CLEARANCE_M = 0.3
 MAX_TRIES = 1500
 NEW = "new"  # the layout name of the object being placed
-_OPENING_KINDS = frozenset({"by_window", "under_window", "facing_window", "by_door", "facing_door"})
 
 
 @dataclass(frozen=True)
@@ -356,7 +355,7 @@ class RoomFloor:
                 else:
                     out += np.hypot(dx, dy)
                 used = True
-            elif wish.kind in _OPENING_KINDS:
+            elif wish.kind in OPENING_KINDS:
                 spans = prep.anchors.doors if "door" in wish.kind else prep.anchors.windows
                 if spans:
                     out += np.min([np.hypot(xs - o.center[0], ys - o.center[1]) for o in spans], 0)

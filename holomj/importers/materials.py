@@ -24,6 +24,7 @@ from importlib import resources
 
 from holomj.importers.frames import triple
 from holomj.importers.ids import sanitise
+from holomj.spec.categories import normalise_category
 from holomj.spec.materials import BUILTIN_MATERIALS, Material
 
 # (keywords, material): the first rule with a keyword found in the lower-cased name wins.
@@ -76,7 +77,7 @@ def procthor_table() -> dict[str, str]:
 
 
 def _key(name: str, drop_number: bool = False) -> str:
-    key = "".join(ch for ch in name.lower() if ch.isalnum())
+    key = normalise_category(name)
     return key.rstrip("0123456789") or key if drop_number else key
 
 

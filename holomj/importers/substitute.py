@@ -2,13 +2,13 @@
 
 1. The requested asset id is in the library: use it as it is.
 2. Otherwise an asset of the object's category, then of the category's aliases
-   (``holomj/data/category_aliases.json``), then of the caller's stand-in categories (for THOR
+   (``holomj/data/category_facts.json``), then of the caller's stand-in categories (for THOR
    types, ``holomj/data/thor_types.json``), closest in size.
 3. Otherwise ``builtin:box`` scaled to the object's size.
 
 The object's size (x = depth, y = width, z = height, metres, in the object's own frame) is what
 the caller knows from the source (the AI2-THOR asset table, a Holodeck footprint), else a typical
-size of its category from ``holomj/data/category_sizes.json``; unknown categories get a 0.5 m
+size of its category from ``holomj/data/category_facts.json``; unknown categories get a 0.5 m
 cube and a warning.
 
 Fitting (``fit=True``; the importers ask for it when the size is the original's true size)
@@ -41,22 +41,13 @@ an opening original gets a stand-in that opens whenever the library has one.
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass, replace
-from functools import cache
-from importlib import resources
 
 from holomj.importers.frames import triple
 from holomj.importers.result import Substitution
-from holomj.library.store import (
-    BUILTIN_BOX,
-    AssetLibrary,
-    LibraryAsset,
-    category_aliases,
-    normalise_category,
-    size_distance,
-)
+from holomj.library.store import BUILTIN_BOX, AssetLibrary, LibraryAsset, size_distance
+from holomj.spec.categories import category_aliases, category_size, normalise_category
 
 FALLBACK_SIZE = (0.5, 0.5, 0.5)
 SCALE_MIN = 0.5  # smallest per-axis factor applied to a stand-in
@@ -66,23 +57,6 @@ MIN_EXTENT = 0.005  # metres: thinner source extents (a credit card's 4.5 mm) ar
 
 Size = tuple[float, float, float]
 Scale = float | tuple[float, float, float]
-
-
-@cache
-def category_sizes() -> dict[str, Size]:
-    """Typical sizes (x = depth, y = width, z = height, metres) by normalised category."""
-    text = resources.files("holomj.data").joinpath("category_sizes.json").read_text("utf-8")
-    table = json.loads(text)
-    return {
-        normalise_category(name): (float(v["depth"]), float(v["width"]), float(v["height"]))
-        for name, v in table.items()
-        if not name.startswith("_")
-    }
-
-
-def category_size(category: str) -> Size | None:
-    """The typical size of a category, if the table knows it."""
-    return category_sizes().get(normalise_category(category))
 
 
 @dataclass(frozen=True)

@@ -20,6 +20,7 @@ import numpy as np
 
 from asset_pipeline.procedural.parts import Part, Vec3
 from holomj.errors import InputError, closest_names
+from holomj.spec.categories import normalise_category
 
 Kind = Literal["furniture", "object"]
 SIZE_TOLERANCE = 1e-3  # generated bbox vs requested size, and round footprints' x vs y
@@ -229,9 +230,9 @@ def lookup(table: dict[str, CategoryInfo], name: str, unknown: str) -> CategoryI
     saying ``unknown`` and the nearest known names."""
     if name in table:
         return table[name]
-    key = _normalised(name)
+    key = normalise_category(name)
     for known, info in table.items():
-        if _normalised(known) == key:
+        if normalise_category(known) == key:
             return info
     near = closest_names(name, table)
     hint = f"did you mean: {near}" if near else f"known: {', '.join(sorted(table))}"
@@ -248,10 +249,6 @@ def rng_for(category_name: str, seed: int) -> np.random.Generator:
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise InputError(f"seed must be a non-negative integer, got {seed!r}")
     return np.random.default_rng([int(seed), zlib.crc32(category_name.encode())])
-
-
-def _normalised(name: str) -> str:
-    return "".join(ch for ch in name.lower() if ch.isalnum())
 
 
 def _fmt(size: Vec3) -> str:

@@ -14,6 +14,7 @@ from holomj.layout.furniture_rules import WALL_KINDS, object_id
 from holomj.layout.wall_objects import FloorItem, WallObjectRequest, place_wall_objects
 from holomj.library.store import AssetLibrary
 from holomj.seeds import stage_rng
+from holomj.spec.categories import plan_axes
 from holomj.spec.plan import PlanObject, PlanRoom, PlanSmallObject, instance_name
 from holomj.spec.scene import Room, SceneObject, Window
 
@@ -44,13 +45,12 @@ def hang_wall_objects(
     asset_of = {object_id(room.id, instance): a for instance, a in assets.items()}
     for instance, asset_id in assets.items():
         meta = library.get(asset_id).meta
-        depth, width, height = meta.size
         target = above.get(instance.rsplit("-", 1)[0])
         looker = faced_by.get(instance.rsplit("-", 1)[0])
         requests.append(
             WallObjectRequest(
                 id=object_id(room.id, instance),
-                size=(width, depth, height),
+                size=plan_axes(meta.size),
                 kind=WALL_KINDS.get(meta.category, "other"),
                 above=paired(room.id, instance, target, counts) if target else None,
                 faced_by=paired(room.id, instance, looker, counts) if looker else None,

@@ -22,6 +22,7 @@ from holomj.layout.furniture_rules import FIXED_CATEGORIES, WALL_KINDS
 from holomj.layout.geometry import LAYOUT_MARGIN_M
 from holomj.layout.wall_objects import FloorItem, WallObjectRequest, place_wall_objects
 from holomj.library.store import AssetLibrary
+from holomj.spec.categories import plan_axes
 from holomj.spec.edit import AddOp
 from holomj.spec.scene import SceneObject, SceneSpec
 
@@ -101,13 +102,12 @@ def hang_on_wall(
     index: int,
 ) -> SceneObject:
     meta = library.get(asset_id).meta
-    depth, width, height = meta.size
     items = _things_as_floor_items(scene, room_id, library)
     if above is not None and above not in {i.id for i in items}:
         raise Refused(f"{above} is not in room {room_id!r}")
     request = WallObjectRequest(
         id=oid,
-        size=(width, depth, height),
+        size=plan_axes(meta.size),
         kind=WALL_KINDS.get(meta.category, "other"),
         above=above,
     )

@@ -16,6 +16,7 @@ import numpy as np
 from holomj.errors import InputError
 from holomj.library.store import LibraryAsset
 from holomj.spec.assets import PLACEMENTS
+from holomj.spec.categories import plan_axes
 
 SIZE_CAP_M = 1.5
 
@@ -99,13 +100,14 @@ def size_discrepancy(
     footprint may also be turned by 90°. Each difference is capped at :data:`SIZE_CAP_M`.
     """
     width, depth, height = requested
-    x, y, z = asset_size
-    dz = min(abs(z - height), SIZE_CAP_M)
+    asset_width, asset_depth, asset_height = plan_axes(asset_size)
+    dz = min(abs(asset_height - height), SIZE_CAP_M)
 
     def footprint(w: float, d: float) -> float:
         return min(abs(w - width), SIZE_CAP_M) + min(abs(d - depth), SIZE_CAP_M)
 
-    return (min(footprint(y, x), footprint(x, y)) + dz) / 3.0
+    turned = footprint(asset_depth, asset_width)
+    return (min(footprint(asset_width, asset_depth), turned) + dz) / 3.0
 
 
 def check_size(size: Sequence[float], description: str) -> tuple[float, float, float]:

@@ -62,7 +62,7 @@ def _knowledge_names() -> dict[str, KnownKind]:
     kinds: dict[str, KnownKind] = {}
     for name, entry in json.loads(text).get("objects", {}).items():
         raw = entry.get("size")
-        size = (float(raw[1]), float(raw[0]), float(raw[2])) if raw and len(raw) == 3 else None
+        size = (float(raw[0]), float(raw[1]), float(raw[2])) if raw and len(raw) == 3 else None
         kind = KnownKind(entry["category"], size, str(entry.get("placement", "floor")))
         for word in (name, entry["category"], *entry.get("aliases", [])):
             kinds.setdefault(normalise_category(word), kind)

@@ -5,8 +5,11 @@ The knowledge is data, in ``holomj/data/knowledge/*.json``; this module loads it
 :mod:`holomj.plan.knowledge_checks`:
 
 * ``objects.json``: object kinds (plan names such as ``"dining chair"``) with a category (the
-  default library's, else a new one equal to the kind's name in snake_case), a size (width,
-  depth, height in metres, within sane ranges for its placement), optional small/large sizes,
+  default library's, else a new one equal to the kind's name in snake_case), a size (in the
+  file, like every size in holomj's data files, in the asset axes of
+  :mod:`holomj.spec.categories`: x = depth, y = width, z = height, metres; the loader turns
+  it into the plan's (width, depth, height) with :func:`~holomj.spec.categories.plan_axes`,
+  here and nowhere else), within sane ranges for its placement, optional small/large sizes,
   placement (floor, wall, ceiling, or ``object`` for small objects that go on receptacles), the
   words that name them in a prompt, whether small objects go on it (``receptacle``), the room
   templates it belongs in (``rooms``) and default layout constraints; ``generics``
@@ -48,6 +51,7 @@ from holomj.plan.knowledge_schema import (
     StylesFile,
 )
 from holomj.spec.base import parse_json, validate_model
+from holomj.spec.categories import plan_axes
 
 if TYPE_CHECKING:
     from importlib.abc import Traversable
@@ -72,7 +76,7 @@ def load_knowledge(folder: Path | Traversable) -> KnowledgeBase:
                 continue
             raise SpecError("knowledge file missing", where=f"{folder}/{name}")
         texts[name] = entry.read_text(encoding="utf-8")
-    objects = validate_model(ObjectsFile, _data(texts, "objects.json"), "objects.json")
+    objects = validate_model(ObjectsFile, _plan_sizes(_data(texts, "objects.json")), "objects.json")
     rooms = validate_model(RoomsFile, _data(texts, "rooms.json"), "rooms.json")
     scenes = validate_model(ScenesFile, _data(texts, "scene_types.json"), "scene_types.json")
     styles = validate_model(StylesFile, _data(texts, "styles.json"), "styles.json")
@@ -100,6 +104,22 @@ def load_knowledge(folder: Path | Traversable) -> KnowledgeBase:
     )
     check_knowledge(kb)
     return kb
+
+
+def _plan_sizes(data: Any) -> Any:
+    """``objects.json``'s kinds with their sizes (asset axes in the file) as plan sizes
+    (width, depth, height); anything that is not three values is left for the schema to refuse."""
+    kinds = data.get("objects") if isinstance(data, dict) else None
+    if not isinstance(kinds, dict):
+        return data
+    for kind in kinds.values():
+        if not isinstance(kind, dict):
+            continue
+        for key in ("size", "small", "large"):
+            value = kind.get(key)
+            if isinstance(value, list) and len(value) == 3:
+                kind[key] = list(plan_axes((value[0], value[1], value[2])))
+    return data
 
 
 def _data(texts: Mapping[str, str], name: str) -> Any:

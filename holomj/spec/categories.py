@@ -9,9 +9,14 @@ typical size.
   (:func:`category_aliases`, best first) and its typical size (:func:`category_sizes`, in the
   asset axes: x = depth, y = width, z = height).
 
-Sizes: a plan (and the planner's knowledge base) gives an object's size as (width, depth,
-height); an asset's, a generator's and these tables' are (x = depth, y = width, z = height).
-:func:`asset_axes` and :func:`plan_axes` turn one into the other.
+Sizes, one convention: every size holomj stores (an asset's, a generator's, these tables',
+the planner's ``holomj/data/knowledge/objects.json`` as ``[depth, width, height]`` arrays) is
+in the asset axes, x = depth (front to back, the front faces +x), y = width, z = height,
+metres; ``category_facts.json`` names its axes (``width``/``depth``/``height`` keys). Only a
+plan (``holomj.spec.plan``, the edit language and the planner's in-memory object kinds) speaks
+(width, depth, height). :func:`asset_axes` and :func:`plan_axes` are the only conversions
+between the two: the planner's knowledge loader turns ``objects.json`` into plan sizes with
+:func:`plan_axes`, retrieval turns a plan size into the asset axes with :func:`asset_axes`.
 """
 
 from __future__ import annotations

@@ -108,12 +108,11 @@ def test_every_home_category_is_registered_like_the_knowledge_base() -> None:
             known[name]["placement"], ("floor",)
         )
         assert info.placement == expected, name
-        w, d, h = known[name]["size"]  # the knowledge base gives (width, depth, height)
-        np.testing.assert_allclose(info.default_size, (d, w, h), err_msg=name)
+        # objects.json holds sizes in the asset axes (x = depth, y = width, z = height)
+        np.testing.assert_allclose(info.default_size, known[name]["size"], err_msg=name)
         for key in ("small", "large"):
             if key in known[name]:
-                w, d, h = known[name][key]
-                info.check_size((d, w, h))  # raises if outside the range
+                info.check_size(tuple(known[name][key]))  # raises if outside the range
         assert len(info.variants) >= 3 and info.variants[0] is None, name
         assert len({v for v in info.variants if v is not None}) == len(info.variants) - 1
     for name in WALL:

@@ -80,8 +80,8 @@ def test_at_least_45_small_items_with_knowledge_base_names_and_sizes() -> None:
         info = CATEGORIES[name]
         assert info.kind == "object" and "object" in info.placement, name
         assert name in kinds, f"{name} is not a small-object kind of the knowledge base"
-        width, depth, height = kinds[name]["size"]
-        np.testing.assert_allclose(info.default_size, (depth, width, height), atol=1e-9)
+        # objects.json holds sizes in the asset axes (x = depth, y = width, z = height)
+        np.testing.assert_allclose(info.default_size, kinds[name]["size"], atol=1e-9)
         assert all(lo < v < hi for lo, v, hi in zip(info.size_min, info.default_size,
                                                     info.size_max, strict=True)), name  # fmt: skip
         assert len(info.variants) == 2 and info.variants[0] is None, name

@@ -50,12 +50,11 @@ def test_every_category_is_registered_with_three_variants() -> None:
 
 
 def test_default_sizes_follow_the_knowledge_base() -> None:
-    """objects.json gives (width, depth, height); the library's size is (depth, width, height)."""
+    """objects.json gives sizes in the library's axes (x = depth, y = width, z = height)."""
     kinds = json.loads(KNOWLEDGE.read_text())["objects"]
     by_category = {k["category"]: k for k in kinds.values()}
     for name in FLOOR + WALL:
-        width, depth, height = by_category[name]["size"]
-        assert CATEGORIES[name].default_size == pytest.approx((depth, width, height)), name
+        assert CATEGORIES[name].default_size == pytest.approx(by_category[name]["size"]), name
     assert "reception_desk" not in CATEGORIES  # objects.json files the reception desk as a desk
 
 

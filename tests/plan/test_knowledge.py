@@ -378,7 +378,7 @@ def test_the_shipped_folder_loads(tmp_path: Path) -> None:
         ),
         (
             "objects.json",
-            lambda d: d["objects"]["sofa"].update(size=[12.0, 0.9, 0.85]),
+            lambda d: d["objects"]["sofa"].update(size=[0.9, 12.0, 0.85]),  # depth, width, height
             "objects.json: objects.sofa.size: width 12 m is outside the sane range",
         ),
         (

@@ -64,7 +64,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.layout": (
         "pure geometry: floor plans, doors/windows, furniture solver, wall objects",
-        _holomj("spec data"),
+        _holomj("spec"),
     ),
     "holomj.retrieval": (
         "asset and material scoring (text, visual, size), embedding cache",

@@ -26,6 +26,7 @@ import numpy as np
 from holomj.errors import InputError
 from holomj.importers.thor_assets import thor_category, thor_stand_ins
 from holomj.library.store import AssetLibrary, normalise_category
+from holomj.spec.categories import receptacle_table
 
 DEFAULT_COUNT = 3
 MAX_SAME = 2
@@ -48,13 +49,11 @@ def thor_priors() -> dict[str, dict[str, int]]:
 
 @cache
 def _holomj_table() -> dict[str, dict[str, float]]:
-    """Receptacle category -> small-object category -> weight: the planner's tables (the
-    shared one, then the knowledge base's own for the receptacles it lacks)."""
+    """Normalised receptacle category -> small-object category -> weight: the planner's
+    receptacle roles (:func:`holomj.spec.categories.receptacle_table`)."""
     out: dict[str, dict[str, float]] = {}
-    for parts in (("small_objects_on_receptacles.json",), ("knowledge", "receptacles.json")):
-        for key, items in _read(*parts).items():
-            if not key.startswith("_"):
-                out.setdefault(normalise_category(key), {c: float(w) for c, w in items})
+    for key, items in receptacle_table().items():
+        out.setdefault(normalise_category(key), dict(items))
     return out
 
 

@@ -36,6 +36,7 @@ from shapely.ops import unary_union
 
 from holomj.errors import SpecError, closest_names
 from holomj.spec.base import FrozenModel, Identifier, spec_error_from_validation
+from holomj.spec.categories import normal_type
 from holomj.spec.scene import Room
 from holomj.spec.walls import room_polygon
 
@@ -77,11 +78,6 @@ ENTRANCE_PREFERENCE = (
 )
 
 Side = Annotated[float, Field(gt=0.0, le=100.0)]
-
-
-def normal_type(room_type: str) -> str:
-    """``"Living Room"`` -> ``"living_room"``: the form the tables of this package use."""
-    return "_".join(room_type.strip().lower().replace("-", " ").split())
 
 
 class RoomRequest(FrozenModel):

@@ -11,22 +11,20 @@ Receptacles with no surfaces or no catalogue entry get no proposal.
 
 from __future__ import annotations
 
-import functools
-import json
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from importlib import resources
 
 import numpy as np
 
 from holomj.errors import SpecError
-from holomj.layout.floorplan import normal_type
 from holomj.spec.assets import AssetMeta
+from holomj.spec.categories import SHARED_RECEPTACLES_FILE as CATALOGUE_FILE
+from holomj.spec.categories import ReceptacleTable, receptacle_file_table, receptacle_key
+from holomj.spec.categories import parse_receptacle_table as parse_catalogue
 
 AREA_PER_OBJECT_M2 = 0.06
 MAX_PER_RECEPTACLE = 15
-CATALOGUE_FILE = "small_objects_on_receptacles.json"
 
 Catalogue = Mapping[str, Sequence[tuple[str, float]]]
 
@@ -40,58 +38,13 @@ class Proposal:
     count: int
 
 
-@functools.cache
-def _default_catalogue() -> dict[str, tuple[tuple[str, float], ...]]:
-    text = resources.files("holomj.data").joinpath(CATALOGUE_FILE).read_text(encoding="utf-8")
-    return parse_catalogue(json.loads(text), CATALOGUE_FILE)
+def _default_catalogue() -> ReceptacleTable:
+    return receptacle_file_table(CATALOGUE_FILE)
 
 
 def default_catalogue() -> dict[str, list[tuple[str, float]]]:
     """The shipped catalogue: receptacle category -> [(small object category, weight)]."""
     return {key: list(items) for key, items in _default_catalogue().items()}
-
-
-def parse_catalogue(
-    data: object, source: str = "catalogue"
-) -> dict[str, tuple[tuple[str, float], ...]]:
-    """Validate a catalogue read from JSON (keys starting with ``_`` are comments)."""
-    if not isinstance(data, Mapping):
-        raise SpecError("a catalogue is an object of receptacle -> list", where=source)
-    out: dict[str, tuple[tuple[str, float], ...]] = {}
-    for key, items in data.items():
-        if str(key).startswith("_"):
-            continue
-        where = f"{source}: {key}"
-        if not isinstance(items, Sequence) or isinstance(items, str):
-            raise SpecError("expected a list of [category, weight] pairs", where=where)
-        parsed = []
-        for i, item in enumerate(items):
-            ok = (
-                isinstance(item, Sequence)
-                and not isinstance(item, str)
-                and len(item) == 2
-                and isinstance(item[0], str)
-                and isinstance(item[1], int | float)
-                and not isinstance(item[1], bool)
-                and math.isfinite(item[1])
-                and item[1] >= 0
-            )
-            if not ok:
-                raise SpecError(
-                    "expected [category, weight >= 0]",
-                    where=f"{where}[{i}]",
-                    fix='e.g. ["book", 2]',
-                )
-            parsed.append((item[0], float(item[1])))
-        out[_key(str(key))] = tuple(parsed)
-    return out
-
-
-def _key(name: str) -> str:
-    if ":" in name:
-        room, _, rec = name.partition(":")
-        return f"{normal_type(room)}:{normal_type(rec)}"
-    return normal_type(name)
 
 
 def capacity(meta: AssetMeta, max_per_receptacle: int = MAX_PER_RECEPTACLE) -> int:
@@ -118,7 +71,9 @@ def propose_small_objects(
     table = _default_catalogue() if catalogue is None else parse_catalogue(dict(catalogue))
     proposals: list[Proposal] = []
     for object_id, meta, room_type in receptacles:
-        items = table.get(_key(f"{room_type}:{meta.category}")) or table.get(_key(meta.category))
+        items = table.get(receptacle_key(f"{room_type}:{meta.category}")) or table.get(
+            receptacle_key(meta.category)
+        )
         if not items:
             continue
         weights = np.array([w for _, w in items], dtype=float)

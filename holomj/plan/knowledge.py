@@ -41,7 +41,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from holomj.errors import SpecError
-from holomj.layout.proposals import default_catalogue
 from holomj.plan.knowledge_checks import check_knowledge
 from holomj.plan.knowledge_schema import (
     KnowledgeBase,
@@ -51,7 +50,12 @@ from holomj.plan.knowledge_schema import (
     StylesFile,
 )
 from holomj.spec.base import parse_json, validate_model
-from holomj.spec.categories import plan_axes
+from holomj.spec.categories import (
+    SHARED_RECEPTACLES_FILE,
+    parse_receptacle_table,
+    plan_axes,
+    receptacle_file_table,
+)
 
 if TYPE_CHECKING:
     from importlib.abc import Traversable
@@ -80,15 +84,13 @@ def load_knowledge(folder: Path | Traversable) -> KnowledgeBase:
     rooms = validate_model(RoomsFile, _data(texts, "rooms.json"), "rooms.json")
     scenes = validate_model(ScenesFile, _data(texts, "scene_types.json"), "scene_types.json")
     styles = validate_model(StylesFile, _data(texts, "styles.json"), "styles.json")
-    receptacles = default_catalogue()
+    receptacles = dict(receptacle_file_table(SHARED_RECEPTACLES_FILE))
     if RECEPTACLES_FILE in texts:
-        from holomj.layout.proposals import parse_catalogue
-
-        extra = parse_catalogue(
+        extra = parse_receptacle_table(
             parse_json(texts[RECEPTACLES_FILE], RECEPTACLES_FILE), RECEPTACLES_FILE
         )
         for key, items in extra.items():
-            receptacles.setdefault(key, list(items))
+            receptacles.setdefault(key, items)
     kb = KnowledgeBase(
         objects=objects.objects,
         generics=objects.generics,

@@ -8,6 +8,12 @@ typical size.
   object types, plurals, near-synonyms), the categories that may stand in for it
   (:func:`category_aliases`, best first) and its typical size (:func:`category_sizes`, in the
   asset axes: x = depth, y = width, z = height).
+- Receptacle roles (which categories small objects go on, and which small categories, with
+  weights) are read here and nowhere else: :func:`parse_receptacle_table` checks a table,
+  :func:`receptacle_file_table` reads one shipped file (``small_objects_on_receptacles.json``,
+  the table layout draws from; ``knowledge/receptacles.json``, the planner's additions) and
+  :func:`receptacle_table` merges the two (the shared table wins), for whoever asks "is X a
+  receptacle, and of what" (the planner's knowledge base, populate's fallback priors).
 
 Sizes, one convention: every size holomj stores (an asset's, a generator's, these tables',
 the planner's ``holomj/data/knowledge/objects.json`` as ``[depth, width, height]`` arrays) is
@@ -23,11 +29,18 @@ from __future__ import annotations
 
 import functools
 import json
+import math
+from collections.abc import Mapping, Sequence
 from importlib import resources
 from typing import Any
 
+from holomj.errors import SpecError
+
 Size = tuple[float, float, float]
 FACTS_FILE = "category_facts.json"
+SHARED_RECEPTACLES_FILE = "small_objects_on_receptacles.json"
+KNOWLEDGE_RECEPTACLES_FILE = "knowledge/receptacles.json"
+ReceptacleTable = dict[str, tuple[tuple[str, float], ...]]
 
 
 def normalise_category(category: str) -> str:
@@ -74,3 +87,71 @@ def category_sizes() -> dict[str, Size]:
 def category_size(category: str) -> Size | None:
     """The typical size of a category (asset axes), if the table knows it."""
     return category_sizes().get(normalise_category(category))
+
+
+def normal_type(room_type: str) -> str:
+    """``"Living Room"`` -> ``"living_room"``: the form room types and the receptacle tables'
+    keys take."""
+    return "_".join(room_type.strip().lower().replace("-", " ").split())
+
+
+def parse_receptacle_table(data: object, source: str = "catalogue") -> ReceptacleTable:
+    """A receptacle table read from JSON, checked: receptacle category (or ``"<room
+    type>:<receptacle category>"``) -> ((small object category, weight >= 0), ...); keys starting
+    with ``_`` are comments. A SpecError names the entry that is wrong."""
+    if not isinstance(data, Mapping):
+        raise SpecError("a catalogue is an object of receptacle -> list", where=source)
+    out: ReceptacleTable = {}
+    for key, items in data.items():
+        if str(key).startswith("_"):
+            continue
+        where = f"{source}: {key}"
+        if not isinstance(items, Sequence) or isinstance(items, str):
+            raise SpecError("expected a list of [category, weight] pairs", where=where)
+        parsed = []
+        for i, item in enumerate(items):
+            ok = (
+                isinstance(item, Sequence)
+                and not isinstance(item, str)
+                and len(item) == 2
+                and isinstance(item[0], str)
+                and isinstance(item[1], int | float)
+                and not isinstance(item[1], bool)
+                and math.isfinite(item[1])
+                and item[1] >= 0
+            )
+            if not ok:
+                raise SpecError(
+                    "expected [category, weight >= 0]",
+                    where=f"{where}[{i}]",
+                    fix='e.g. ["book", 2]',
+                )
+            parsed.append((item[0], float(item[1])))
+        out[receptacle_key(str(key))] = tuple(parsed)
+    return out
+
+
+def receptacle_key(name: str) -> str:
+    """A receptacle table's key in its normal form (``"Living Room:coffee-table"`` ->
+    ``"living_room:coffee_table"``)."""
+    if ":" in name:
+        room, _, rec = name.partition(":")
+        return f"{normal_type(room)}:{normal_type(rec)}"
+    return normal_type(name)
+
+
+@functools.cache
+def receptacle_file_table(name: str) -> ReceptacleTable:
+    """One shipped receptacle table (a path under ``holomj/data``), checked."""
+    text = resources.files("holomj.data").joinpath(name).read_text(encoding="utf-8")
+    return parse_receptacle_table(json.loads(text), name)
+
+
+@functools.cache
+def receptacle_table() -> ReceptacleTable:
+    """The shipped receptacle roles: the shared table, then the planner's own entries for the
+    receptacles (and room-type keys) it lacks."""
+    table = dict(receptacle_file_table(SHARED_RECEPTACLES_FILE))
+    for key, items in receptacle_file_table(KNOWLEDGE_RECEPTACLES_FILE).items():
+        table.setdefault(key, items)
+    return table

@@ -1,0 +1,192 @@
+"""Feasible tasks proposed from a scene's ``objects.json`` and ``navmap.json`` records.
+
+- open / close: every articulated part with a handle between :data:`HANDLE_HEIGHT_M` (each
+  object's first part first); a close task starts with the part open (``start``);
+- pick-and-place: free objects standing in the open (not inside closed storage), no heavier
+  than :data:`GRASP_MASS_KG` and no larger than :data:`GRASP_SIZE_M`, each to another
+  receptacle surface in its room whose free area (surface area less the footprints of the
+  objects resting on it) holds it with room to spare;
+- rearrange: two pick-and-place goals with distinct objects and receptacles;
+- navigate: every room the navigation map marks reachable, and every piece of furniture with
+  a surface in a reachable room (the base within reach of it, facing it).
+
+Kinds are taken in turn so a small ``limit`` still gets a mix; the choice is deterministic.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+from holomj.spec.tasks import (
+    ArticulationTask,
+    NavigateTask,
+    PickPlaceTask,
+    PlaceGoal,
+    RearrangeTask,
+    Task,
+    TaskSet,
+)
+
+HANDLE_HEIGHT_M = (0.05, 1.9)
+GRASP_MASS_KG = 2.0
+GRASP_SIZE_M = 0.3
+ON_TOP_TOL_M = 0.03
+FREE_AREA_FACTOR = 2.0  # a receptacle needs this many times the object's footprint free
+OPEN_FRACTION = 0.5
+CLOSED_FRACTION = 0.05
+CLOSE_START = 0.8
+NAVIGATE_RADIUS_M = 1.0
+
+
+def propose_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None, limit: int) -> TaskSet:
+    """At most ``limit`` feasible tasks for the scene of ``objects`` (its ``objects.json``)
+    and ``navmap`` (its ``navmap.json``; None: no navigation tasks)."""
+    kinds = [
+        list(_articulation_tasks(objects)),
+        list(_place_tasks(objects)),
+        list(_navigate_tasks(objects, navmap)),
+    ]
+    places = [t for t in kinds[1] if isinstance(t, PickPlaceTask)]
+    kinds.append(list(_rearrange_tasks(places)))
+    chosen: list[Task] = []
+    while len(chosen) < limit and any(kinds):
+        for tasks in kinds:
+            if tasks and len(chosen) < limit:
+                chosen.append(tasks.pop(0))
+    return TaskSet(scene=str(objects.get("scene", "")), tasks=chosen)
+
+
+def _articulation_tasks(objects: dict[str, Any]) -> Iterator[Task]:
+    low, high = HANDLE_HEIGHT_M
+    handled = [
+        (obj, [j for j in obj.get("joints", []) if _handle_between(j, low, high)])
+        for obj in objects.get("objects", [])
+    ]
+    depth = max((len(joints) for _, joints in handled), default=0)
+    for index in range(depth):  # every object's first part, then every second one, ...
+        for obj, joints in handled:
+            if index >= len(joints):
+                continue
+            joint = joints[index]
+            what = f"the {joint['part']} of the {obj['category'] or obj['id']}"
+            name = _slug(joint["name"])
+            yield ArticulationTask(
+                kind="open",
+                id=f"open-{name}",
+                description=f"open {what}",
+                object=obj["id"],
+                joint=joint["name"],
+                fraction=OPEN_FRACTION,
+            )
+            yield ArticulationTask(
+                kind="close",
+                id=f"close-{name}",
+                description=f"close {what}",
+                object=obj["id"],
+                joint=joint["name"],
+                fraction=CLOSED_FRACTION,
+                start=CLOSE_START,
+            )
+
+
+def _handle_between(joint: dict[str, Any], low: float, high: float) -> bool:
+    handle = joint.get("handle")
+    return handle is not None and low <= handle["position"][2] <= high
+
+
+def graspable(obj: dict[str, Any]) -> bool:
+    """Whether an object is free, light and small enough for a hand to pick up."""
+    if obj.get("static") or obj.get("joints") or obj.get("proxy"):
+        return False
+    low, high = obj["aabb"]["min"], obj["aabb"]["max"]
+    size = max(high[i] - low[i] for i in range(3))
+    return bool(obj["mass_kg"] <= GRASP_MASS_KG and size <= GRASP_SIZE_M)
+
+
+def on_top(objects: dict[str, Any], obj: dict[str, Any]) -> bool:
+    """Whether an object stands on the floor or on a top surface of its support (not inside a
+    closed cabinet or fridge, where a hand would first have to open a door)."""
+    support = {o["id"]: o for o in objects.get("objects", [])}.get(obj.get("support") or "")
+    if support is None:
+        return True
+    bottom = obj["aabb"]["min"][2]
+    return any(abs(bottom - s["height"]) <= ON_TOP_TOL_M for s in support.get("surfaces", []))
+
+
+def free_area(objects: dict[str, Any], receptacle: dict[str, Any]) -> float:
+    """A receptacle's surface area less the footprints of the objects resting on it."""
+    used = sum(
+        _footprint(o) for o in objects.get("objects", []) if o.get("support") == receptacle["id"]
+    )
+    return float(sum(s["area_m2"] for s in receptacle.get("surfaces", []))) - used
+
+
+def _place_tasks(objects: dict[str, Any]) -> Iterator[Task]:
+    records = objects.get("objects", [])
+    receptacles = [o for o in records if o.get("surfaces")]
+    for item in (o for o in records if graspable(o) and on_top(objects, o)):
+        need = FREE_AREA_FACTOR * _footprint(item)
+        for receptacle in receptacles:
+            if receptacle["id"] in (item["id"], item.get("support")):
+                continue
+            if receptacle["room"] != item["room"] or free_area(objects, receptacle) < need:
+                continue
+            largest = max(receptacle["surfaces"], key=lambda s: s["area_m2"])
+            yield PickPlaceTask(
+                id=f"place-{_slug(item['id'])}-on-{_slug(receptacle['id'])}",
+                description=(
+                    f"put the {item['category'] or item['id']} on the "
+                    f"{receptacle['category'] or receptacle['id']}"
+                ),
+                goal=PlaceGoal(
+                    object=item["id"], receptacle=receptacle["id"], surface=largest["index"]
+                ),
+            )
+            break
+
+
+def _rearrange_tasks(places: list[PickPlaceTask]) -> Iterator[Task]:
+    for first, second in zip(places, places[1:], strict=False):
+        a, b = first.goal, second.goal
+        if a.object == b.object:
+            continue
+        yield RearrangeTask(
+            id=f"rearrange-{_slug(a.object)}-{_slug(b.object)}",
+            description=f"{first.description}, and {second.description}",
+            goals=[a, b],
+        )
+
+
+def _navigate_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None) -> Iterator[Task]:
+    if navmap is None or objects.get("robot") is None:
+        return
+    rooms = navmap.get("rooms", {})
+    for room in objects.get("rooms", []):
+        if rooms.get(room["id"], {}).get("reachable"):
+            yield NavigateTask(
+                id=f"go-to-{_slug(room['id'])}",
+                description=f"go to the {room['type']}",
+                room=room["id"],
+            )
+    for obj in objects.get("objects", []):
+        if (
+            obj.get("surfaces")
+            and not graspable(obj)
+            and rooms.get(obj["room"], {}).get("reachable")
+        ):
+            yield NavigateTask(
+                id=f"go-to-{_slug(obj['id'])}",
+                description=f"go to the {obj['category'] or obj['id']}",
+                object=obj["id"],
+                radius_m=NAVIGATE_RADIUS_M,
+            )
+
+
+def _footprint(obj: dict[str, Any]) -> float:
+    low, high = obj["aabb"]["min"], obj["aabb"]["max"]
+    return float((high[0] - low[0]) * (high[1] - low[1]))
+
+
+def _slug(name: str) -> str:
+    return "".join(c if c.isalnum() or c in "_.-" else "-" for c in name)

@@ -326,7 +326,6 @@ class _Run:
                 self.library,
                 self.seed,
                 time_limit_s=self.options.layout_time_s,
-                request=plan.prompt,
             )
             for plan_room in plan.rooms
         ]

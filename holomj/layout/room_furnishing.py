@@ -28,7 +28,6 @@ from shapely.geometry import Point, Polygon, box
 from holomj.errors import HolomjError
 from holomj.layout.counter_runs import (
     ISLAND_CATEGORY,
-    requested_shape,
     run_modules,
     run_windows,
     solve_counter_run,
@@ -192,7 +191,6 @@ def furnish_room(
     seed: int,
     *,
     time_limit_s: float = 1.0,
-    request: str = "",
 ) -> RoomFurniture:
     """Lay out the retrieved floor ``assets`` of ``plan_room`` in ``room`` and hang its wall
     objects.
@@ -201,8 +199,8 @@ def furnish_room(
     still does not fit, a window that keeps it out is moved to a free stretch of exterior wall,
     or left out when there is none; ``changes`` says what moved and why. A kitchen's counters,
     sink, cooker and dishwasher make one counter run (:mod:`holomj.layout.counter_runs`; its
-    record is ``layout["counter_run"]``), in the shape ``request`` (the prompt) or the room's
-    words ask for, if any. Many desks and their seats stand in rows facing one front wall
+    record is ``layout["counter_run"]``), in the shape the plan asks for
+    (``counter_run_shape``), if any. Many desks and their seats stand in rows facing one front wall
     (:mod:`holomj.layout.desk_grid`; its record is ``layout["desk_grid"]``), and the room's
     boards hang on that wall."""
     out = RoomFurniture(room.id, picks=list(assets.picks), unplaced=list(assets.failed))
@@ -229,7 +227,6 @@ def furnish_room(
             {i: m.category for i, m in metas.items()},
             solve=plain,
             plan_room=plan_room,
-            request=request,
             defining_priority=DEFINING_PRIORITY,
             keep_priority=REQUESTED_PRIORITY,
         )
@@ -244,7 +241,7 @@ def furnish_room(
             run_modules(problem, categories, {i: m.size for i, m in metas.items()}),
             solve=gridded,
             rng=stage_rng(seed, "counter_run", room.id),
-            requested=requested_shape(plan_room, request),
+            requested=plan_room.counter_run_shape,
             island=next((i for i, c in categories.items() if c == ISLAND_CATEGORY), None),
             defining_priority=DEFINING_PRIORITY,
             windows=room_windows,

@@ -38,6 +38,7 @@ from __future__ import annotations
 import numpy as np
 
 from holomj.errors import InputError
+from holomj.plan.arrangement_words import with_arrangement_words
 from holomj.plan.constraints_text import constraint_lines
 from holomj.plan.draft import MAX_QUANTITY, DraftObject, DraftPlan, DraftRoom
 from holomj.plan.fit import ESSENTIAL, fit_room
@@ -93,7 +94,7 @@ def plan_offline(prompt: str, seed: int, *, encoder: TextEncoder | None = None) 
     for room in state.rooms:
         fit_room(state, room)
     entrance = entrance_room(state, scene)
-    rooms = [_plan_room(state, room, styles) for room in state.rooms]
+    rooms = [with_arrangement_words(_plan_room(state, r, styles), prompt) for r in state.rooms]
     return ScenePlan(
         prompt=prompt,
         planner="offline",

@@ -18,7 +18,7 @@ from pydantic import Field, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
 
-PLAN_SCHEMA_VERSION = "1.0"
+PLAN_SCHEMA_VERSION: Literal["1.0"] = "1.0"
 
 # Names of plan objects: Holodeck-like ("dining chair"), no '|' or ',' (they separate fields of
 # the constraint text form) and no trailing "-<n>" (that is an instance suffix).
@@ -28,6 +28,10 @@ ObjectName = Annotated[
 Size3 = tuple[PositiveFloat, PositiveFloat, PositiveFloat]
 Variance = Literal["same", "varied"]
 RoomSide = Annotated[float, Field(ge=1.0, le=40.0)]
+# The shapes of a kitchen's counter run (see holomj.layout.counter_runs).
+CounterRunShape = Literal["one_wall", "galley", "L", "U"]
+# Rows asked for a floor object's instances: how many, or "any" (rows, the count left open).
+RowsAsked = Annotated[int, Field(ge=1, le=20)] | Literal["any"]
 
 
 def instance_name(name: str, index: int) -> str:
@@ -81,6 +85,11 @@ class PlanObject(FrozenModel):
         description="Defining furniture of its room (a bed in a bedroom): laid out first, and "
         "the plan changes (a window moves) before it is dropped.",
     )
+    rows: RowsAsked | None = Field(
+        default=None,
+        description="Floor objects only: the request asks for the instances in rows (desks in "
+        "a classroom): how many rows, or 'any' when it does not say; null when it asks none.",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> PlanObject:
@@ -88,6 +97,8 @@ class PlanObject(FrozenModel):
             raise ValueError("'above' is for wall and ceiling objects")
         if self.faced_by is not None and self.placement != "wall":
             raise ValueError("'faced_by' is for wall objects")
+        if self.rows is not None and self.placement != "floor":
+            raise ValueError("'rows' is for floor objects")
         return self
 
     def instances(self) -> list[str]:
@@ -167,6 +178,11 @@ class PlanRoom(FrozenModel):
         default_factory=list,
         max_length=200,
         description="Where the request puts the room's objects (weighted above the defaults).",
+    )
+    counter_run_shape: CounterRunShape | None = Field(
+        default=None,
+        description="The shape the request or the room's words ask for the kitchen's counter "
+        "run ('a galley kitchen', 'U-shaped counters'); null: the layout chooses.",
     )
 
     @model_validator(mode="after")

@@ -131,8 +131,8 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
         ),
     ),
     "holomj.envs": (
-        "Gymnasium environments on scene folders: joint servo, task targets, reward",
-        _holomj("spec tasks jobs"),
+        "Gymnasium environments on scene folders: joint servo, task targets, scripted policy",
+        _holomj("spec tasks robots jobs"),
     ),
     "holomj.batch": (
         "many jobs on a local worker pool or Ray, resumable",

@@ -5,7 +5,7 @@
 - **Actions**: one value in [-1, 1] per robot joint: a change of its position target of at most
   ``max_delta_rad`` per step (``action_mode="delta"``), or the target itself mapped onto the
   joint's range (``"position"``). The joints are driven by :class:`~holomj.envs.servo.JointServo`
-  for ``frame_skip`` physics steps per action.
+  (the hand's stiffer, so that its fingers grip) for ``frame_skip`` physics steps per action.
 - **Reward**: 1 on success (the task's predicate, held for its ``hold_s``: the episode then
   terminates), minus ``shaping`` times the predicate's distance to success when ``shaping`` > 0.
 - **Reset**: ``mj_resetData`` restores the validated scene (``qpos0``: the poses ``objects.json``
@@ -15,14 +15,14 @@
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any
 
 import gymnasium as gym
 import mujoco
 import numpy as np
 from gymnasium import spaces
 
-from holomj.envs.servo import JointServo
+from holomj.envs.servo import DEFAULT_BANDWIDTH, JointServo
 from holomj.envs.targets import TaskTargets
 from holomj.spec.tasks import ArticulationTask, Task
 from holomj.tasks.predicates import JointFraction, SuccessCheck, condition_for
@@ -31,12 +31,14 @@ FRAME_SKIP = 10
 MAX_DELTA_RAD = 0.05
 MAX_EPISODE_STEPS = 500
 _BIG = 1e3
+HAND = "/hand/"  # the joints of a hand mounted on the arm (holomj.robots.registry)
+HAND_BANDWIDTH = 90.0  # rad/s: a stiffer servo for the fingers, so that they grip
 
 
-class SceneArmEnv(gym.Env[dict[str, np.ndarray], np.ndarray]):
+class SceneArmEnv(gym.Env[dict[str, Any], np.ndarray]):
     """One task on a compiled scene with its attached robot (see the module docstring)."""
 
-    metadata: ClassVar[dict[str, Any]] = {"render_modes": ["rgb_array"], "render_fps": 50}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 50}  # noqa: RUF012  # as gymnasium.Env
 
     def __init__(
         self,
@@ -61,7 +63,9 @@ class SceneArmEnv(gym.Env[dict[str, np.ndarray], np.ndarray]):
         self.check = SuccessCheck(self.condition, task.hold_s)
         self.targets = TaskTargets(task, model, record, self.condition)
         joints = [j["name"] for j in (record.get("robot") or {}).get("joints", [])]
-        self.servo = JointServo.for_joints(model, joints)
+        hand = np.array([HAND in name for name in joints], dtype=bool)
+        bandwidth = np.where(hand, HAND_BANDWIDTH, DEFAULT_BANDWIDTH)
+        self.servo = JointServo.for_joints(model, joints, bandwidth)
         self.frame_skip = frame_skip
         self.max_delta = max_delta_rad
         self.action_mode = action_mode
@@ -73,13 +77,14 @@ class SceneArmEnv(gym.Env[dict[str, np.ndarray], np.ndarray]):
         self._steps = 0
         n = len(joints)
         self.action_space = spaces.Box(-1.0, 1.0, shape=(n,), dtype=np.float32)
+        self._joint_space = spaces.Box(
+            self.servo.low.astype(np.float32) - 0.1,
+            self.servo.high.astype(np.float32) + 0.1,
+            dtype=np.float32,
+        )
         self.observation_space = spaces.Dict(
             {
-                "joints": spaces.Box(
-                    self.servo.low.astype(np.float32) - 0.1,
-                    self.servo.high.astype(np.float32) + 0.1,
-                    dtype=np.float32,
-                ),
+                "joints": self._joint_space,
                 "velocities": spaces.Box(-_BIG, _BIG, shape=(n,), dtype=np.float32),
                 "target": spaces.Box(-_BIG, _BIG, shape=(3,), dtype=np.float32),
                 "goal": spaces.Box(-_BIG, _BIG, shape=(3,), dtype=np.float32),
@@ -109,13 +114,10 @@ class SceneArmEnv(gym.Env[dict[str, np.ndarray], np.ndarray]):
         else:
             low, high = self.servo.low, self.servo.high
             self._target = low + (act + 1.0) * 0.5 * (high - low)
-        success = False
         for _ in range(self.frame_skip):
             self.servo.apply(self.data, self._target)
             mujoco.mj_step(self.model, self.data)
-            success = self.check.update(self.data) or success
-            if success:
-                break
+        success = self.check.update(self.data)  # once per action: hold times count in steps
         self._steps += 1
         reward = float(success)
         if self.shaping > 0.0:
@@ -123,11 +125,16 @@ class SceneArmEnv(gym.Env[dict[str, np.ndarray], np.ndarray]):
         truncated = not success and self._steps >= self.max_episode_steps
         return self._observation(), reward, success, truncated, self._info(success)
 
+    @property
+    def target(self) -> np.ndarray:
+        """The robot's joint position targets now."""
+        return self._target
+
     def set_joint_targets(self, target: np.ndarray) -> None:
         """Set the robot's joint position targets directly (for scripted policies)."""
         self._target = self.servo.clip(np.asarray(target, dtype=float))
 
-    def render(self) -> np.ndarray | None:  # type: ignore[override]  # rgb_array only
+    def render(self) -> np.ndarray | None:
         """An RGB image of the scene from its free camera (``render_mode="rgb_array"``)."""
         if self.render_mode != "rgb_array":
             return None
@@ -151,8 +158,7 @@ class SceneArmEnv(gym.Env[dict[str, np.ndarray], np.ndarray]):
 
     def _observation(self) -> dict[str, np.ndarray]:
         target, goal = self.targets.points(self.data)
-        space = self.observation_space.spaces["joints"]
-        assert isinstance(space, spaces.Box)
+        space = self._joint_space
         joints = np.clip(self.data.qpos[self.servo.qpos_adr], space.low, space.high)
         return {
             "joints": joints.astype(np.float32),

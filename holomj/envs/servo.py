@@ -33,11 +33,14 @@ class JointServo:
     low: np.ndarray
     high: np.ndarray
     home: np.ndarray
-    bandwidth: float = DEFAULT_BANDWIDTH
+    bandwidth: float | np.ndarray = DEFAULT_BANDWIDTH  # rad/s, one for all or one per joint
 
     @classmethod
     def for_joints(
-        cls, model: mujoco.MjModel, names: Sequence[str], bandwidth: float = DEFAULT_BANDWIDTH
+        cls,
+        model: mujoco.MjModel,
+        names: Sequence[str],
+        bandwidth: float | np.ndarray = DEFAULT_BANDWIDTH,
     ) -> JointServo:
         """A servo for the joints ``names`` of ``model``; their home is ``qpos0``."""
         ids = []

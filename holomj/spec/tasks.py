@@ -22,7 +22,6 @@ from pydantic import Field, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier
 
-TASKS_SCHEMA_VERSION = "1.0"
 NonNegative = Annotated[float, Field(ge=0.0)]
 
 
@@ -110,7 +109,7 @@ Task = Annotated[
 class TaskSet(FrozenModel):
     """``tasks.json``: the tasks proposed for (or written for) one scene folder."""
 
-    schema_version: Literal["1.0"] = TASKS_SCHEMA_VERSION
+    schema_version: Literal["1.0"] = "1.0"
     scene: str
     tasks: list[Task]
 

@@ -121,6 +121,10 @@ class RestingOn(Condition):
         self.max_speed = max_speed_m_s
         self._model = model
         self._velocity = np.zeros(6)
+        self._is_object = np.zeros(model.nbody, dtype=bool)
+        self._is_object[list(self.object_bodies)] = True
+        self._is_receptacle = np.zeros(model.nbody, dtype=bool)
+        self._is_receptacle[list(self.receptacle_bodies)] = True
 
     def status(self, data: mujoco.MjData) -> Status:
         centre = data.xpos[self.object]
@@ -137,16 +141,14 @@ class RestingOn(Condition):
         return Status(False, best)
 
     def _contact_heights(self, data: mujoco.MjData) -> list[float]:
-        heights = []
-        model = self._model
-        for contact in data.contact[: data.ncon]:
-            a = int(model.geom_bodyid[contact.geom1])
-            b = int(model.geom_bodyid[contact.geom2])
-            if (a in self.object_bodies and b in self.receptacle_bodies) or (
-                b in self.object_bodies and a in self.receptacle_bodies
-            ):
-                heights.append(float(contact.pos[2]))
-        return heights
+        count = int(data.ncon)
+        if count == 0:
+            return []
+        contacts = data.contact
+        bodies = self._model.geom_bodyid[contacts.geom[:count]]  # (count, 2)
+        item, receptacle = self._is_object[bodies], self._is_receptacle[bodies]
+        between = (item[:, 0] & receptacle[:, 1]) | (item[:, 1] & receptacle[:, 0])
+        return [float(z) for z in contacts.pos[:count][between, 2]]
 
     def _slow(self, data: mujoco.MjData) -> bool:
         mujoco.mj_objectVelocity(

@@ -7,14 +7,16 @@
   receptacle surface in its room whose free area (surface area less the footprints of the
   objects resting on it) holds it with room to spare;
 - rearrange: two pick-and-place goals with distinct objects and receptacles;
-- navigate: every room the navigation map marks reachable, and every piece of furniture with
-  a surface in a reachable room (the base within reach of it, facing it).
+- navigate: every room the navigation map marks reachable but the robot's own, and every piece
+  of furniture with a surface in a reachable room farther than :data:`NAVIGATE_RADIUS_M` from
+  the robot (the base within that radius of it, facing it).
 
 Kinds are taken in turn so a small ``limit`` still gets a mix; the choice is deterministic.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from typing import Any
 
@@ -162,25 +164,27 @@ def _navigate_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None) -> I
     if navmap is None or objects.get("robot") is None:
         return
     rooms = navmap.get("rooms", {})
+    robot = objects["robot"]
     for room in objects.get("rooms", []):
-        if rooms.get(room["id"], {}).get("reachable"):
+        if room["id"] != robot.get("room") and _reachable(rooms, room["id"]):
             yield NavigateTask(
                 id=f"go-to-{_slug(room['id'])}",
                 description=f"go to the {room['type']}",
                 room=room["id"],
             )
     for obj in objects.get("objects", []):
-        if (
-            obj.get("surfaces")
-            and not graspable(obj)
-            and rooms.get(obj["room"], {}).get("reachable")
-        ):
+        far = math.dist(obj["position"][:2], robot["position"][:2]) > NAVIGATE_RADIUS_M
+        if far and obj.get("surfaces") and not graspable(obj) and _reachable(rooms, obj["room"]):
             yield NavigateTask(
                 id=f"go-to-{_slug(obj['id'])}",
                 description=f"go to the {obj['category'] or obj['id']}",
                 object=obj["id"],
                 radius_m=NAVIGATE_RADIUS_M,
             )
+
+
+def _reachable(rooms: dict[str, Any], room: str) -> bool:
+    return bool(rooms.get(room, {}).get("reachable"))
 
 
 def _footprint(obj: dict[str, Any]) -> float:

@@ -55,7 +55,7 @@ def open_drawer(env: SceneArmEnv, seed: int = 0) -> ScriptResult:
         )
     position = np.asarray(handle["position"], dtype=float)
     pull = np.asarray(handle["pull"], dtype=float)
-    spot = reach_handle(env.model, position, pull, seed=seed, label=task.joint)
+    spot = reach_handle(env.model, handle["position"], handle["pull"], seed=seed, label=task.joint)
     _move_base(env, spot.base)
     env.reset(seed=seed)
     steps = 0
@@ -64,7 +64,9 @@ def open_drawer(env: SceneArmEnv, seed: int = 0) -> ScriptResult:
         (position, False),
         (position, True),
     ):
-        solution = reach_handle(env.model, point, pull, move_base=False, seed=seed)
+        solution = reach_handle(
+            env.model, point.tolist(), pull.tolist(), move_base=False, seed=seed
+        )
         env.set_joint_targets(_targets(env, solution.qpos, closed))
         done = _hold(env, SETTLE_STEPS)
         steps += done.steps
@@ -93,7 +95,7 @@ class _Held:
 def _hold(env: SceneArmEnv, steps: int) -> _Held:
     """Step ``env`` with the targets as they are; stop when the episode ends."""
     for step in range(1, steps + 1):
-        _, _, terminated, truncated, _ = env.step(np.zeros(env.action_space.shape))
+        _, _, terminated, truncated, _ = env.step(np.zeros(len(env.servo.qpos_adr)))
         if terminated or truncated:
             return _Held(step, terminated, True)
     return _Held(steps, False, False)

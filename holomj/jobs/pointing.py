@@ -36,7 +36,7 @@ from shapely.geometry import MultiPolygon, Point, Polygon
 
 from holomj.errors import HolomjError, InputError
 from holomj.library.store import AssetLibrary, LibraryAsset
-from holomj.plan.llm_parse import LLMResponseError
+from holomj.plan.llm_json import LLMResponseError
 from holomj.spec.scene import SceneSpec
 
 CROP_MARGINS_M = (0.03, 0.08)

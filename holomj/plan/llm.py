@@ -26,10 +26,9 @@ from holomj.plan import llm_prompts as prompts
 from holomj.plan.arrangement_words import with_arrangement_words
 from holomj.plan.llm_client import ChatClient, LLMTransportError
 from holomj.plan.llm_config import LLMConfig
+from holomj.plan.llm_json import LLMResponseError, describe_validation
 from holomj.plan.llm_parse import (
     FloorPlanDraft,
-    LLMResponseError,
-    describe_validation,
     parse_constraints,
     parse_doors,
     parse_floor_plan,

@@ -18,17 +18,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from typing import Any
+from typing import Any, Literal
 
-from holomj.spec.tasks import (
-    ArticulationTask,
-    NavigateTask,
-    PickPlaceTask,
-    PlaceGoal,
-    RearrangeTask,
-    Task,
-    TaskSet,
-)
+from holomj.spec import tasks as spec
 
 HANDLE_HEIGHT_M = (0.05, 1.9)
 GRASP_MASS_KG = 2.0
@@ -39,9 +31,16 @@ OPEN_FRACTION = 0.5
 CLOSED_FRACTION = 0.05
 CLOSE_START = 0.8
 NAVIGATE_RADIUS_M = 1.0
+# (kind, fraction, start) of the two tasks proposed for a part
+_OPEN_CLOSE: tuple[tuple[Literal["open", "close"], float, float | None], ...] = (
+    ("open", OPEN_FRACTION, None),
+    ("close", CLOSED_FRACTION, CLOSE_START),
+)
 
 
-def propose_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None, limit: int) -> TaskSet:
+def propose_tasks(
+    objects: dict[str, Any], navmap: dict[str, Any] | None, limit: int
+) -> spec.TaskSet:
     """At most ``limit`` feasible tasks for the scene of ``objects`` (its ``objects.json``)
     and ``navmap`` (its ``navmap.json``; None: no navigation tasks)."""
     kinds = [
@@ -49,17 +48,17 @@ def propose_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None, limit:
         list(_place_tasks(objects)),
         list(_navigate_tasks(objects, navmap)),
     ]
-    places = [t for t in kinds[1] if isinstance(t, PickPlaceTask)]
+    places = [t for t in kinds[1] if isinstance(t, spec.PickPlaceTask)]
     kinds.append(list(_rearrange_tasks(places)))
-    chosen: list[Task] = []
+    chosen: list[spec.Task] = []
     while len(chosen) < limit and any(kinds):
         for tasks in kinds:
             if tasks and len(chosen) < limit:
                 chosen.append(tasks.pop(0))
-    return TaskSet(scene=str(objects.get("scene", "")), tasks=chosen)
+    return spec.TaskSet(scene=str(objects.get("scene", "")), tasks=chosen)
 
 
-def _articulation_tasks(objects: dict[str, Any]) -> Iterator[Task]:
+def _articulation_tasks(objects: dict[str, Any]) -> Iterator[spec.Task]:
     low, high = HANDLE_HEIGHT_M
     handled = [
         (obj, [j for j in obj.get("joints", []) if _handle_between(j, low, high)])
@@ -72,24 +71,16 @@ def _articulation_tasks(objects: dict[str, Any]) -> Iterator[Task]:
                 continue
             joint = joints[index]
             what = f"the {joint['part']} of the {obj['category'] or obj['id']}"
-            name = _slug(joint["name"])
-            yield ArticulationTask(
-                kind="open",
-                id=f"open-{name}",
-                description=f"open {what}",
-                object=obj["id"],
-                joint=joint["name"],
-                fraction=OPEN_FRACTION,
-            )
-            yield ArticulationTask(
-                kind="close",
-                id=f"close-{name}",
-                description=f"close {what}",
-                object=obj["id"],
-                joint=joint["name"],
-                fraction=CLOSED_FRACTION,
-                start=CLOSE_START,
-            )
+            for kind, fraction, start in _OPEN_CLOSE:
+                yield spec.ArticulationTask(
+                    kind=kind,
+                    id=f"{kind}-{_slug(joint['name'])}",
+                    description=f"{kind} {what}",
+                    object=obj["id"],
+                    joint=joint["name"],
+                    fraction=fraction,
+                    start=start,
+                )
 
 
 def _handle_between(joint: dict[str, Any], low: float, high: float) -> bool:
@@ -124,7 +115,7 @@ def free_area(objects: dict[str, Any], receptacle: dict[str, Any]) -> float:
     return float(sum(s["area_m2"] for s in receptacle.get("surfaces", []))) - used
 
 
-def _place_tasks(objects: dict[str, Any]) -> Iterator[Task]:
+def _place_tasks(objects: dict[str, Any]) -> Iterator[spec.Task]:
     records = objects.get("objects", [])
     receptacles = [o for o in records if o.get("surfaces")]
     for item in (o for o in records if graspable(o) and on_top(objects, o)):
@@ -135,39 +126,39 @@ def _place_tasks(objects: dict[str, Any]) -> Iterator[Task]:
             if receptacle["room"] != item["room"] or free_area(objects, receptacle) < need:
                 continue
             largest = max(receptacle["surfaces"], key=lambda s: s["area_m2"])
-            yield PickPlaceTask(
+            yield spec.PickPlaceTask(
                 id=f"place-{_slug(item['id'])}-on-{_slug(receptacle['id'])}",
                 description=(
                     f"put the {item['category'] or item['id']} on the "
                     f"{receptacle['category'] or receptacle['id']}"
                 ),
-                goal=PlaceGoal(
+                goal=spec.PlaceGoal(
                     object=item["id"], receptacle=receptacle["id"], surface=largest["index"]
                 ),
             )
             break
 
 
-def _rearrange_tasks(places: list[PickPlaceTask]) -> Iterator[Task]:
+def _rearrange_tasks(places: list[spec.PickPlaceTask]) -> Iterator[spec.Task]:
     for first, second in zip(places, places[1:], strict=False):
         a, b = first.goal, second.goal
         if a.object == b.object:
             continue
-        yield RearrangeTask(
+        yield spec.RearrangeTask(
             id=f"rearrange-{_slug(a.object)}-{_slug(b.object)}",
             description=f"{first.description}, and {second.description}",
             goals=[a, b],
         )
 
 
-def _navigate_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None) -> Iterator[Task]:
+def _navigate_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None) -> Iterator[spec.Task]:
     if navmap is None or objects.get("robot") is None:
         return
     rooms = navmap.get("rooms", {})
     robot = objects["robot"]
     for room in objects.get("rooms", []):
         if room["id"] != robot.get("room") and _reachable(rooms, room["id"]):
-            yield NavigateTask(
+            yield spec.NavigateTask(
                 id=f"go-to-{_slug(room['id'])}",
                 description=f"go to the {room['type']}",
                 room=room["id"],
@@ -175,7 +166,7 @@ def _navigate_tasks(objects: dict[str, Any], navmap: dict[str, Any] | None) -> I
     for obj in objects.get("objects", []):
         far = math.dist(obj["position"][:2], robot["position"][:2]) > NAVIGATE_RADIUS_M
         if far and obj.get("surfaces") and not graspable(obj) and _reachable(rooms, obj["room"]):
-            yield NavigateTask(
+            yield spec.NavigateTask(
                 id=f"go-to-{_slug(obj['id'])}",
                 description=f"go to the {obj['category'] or obj['id']}",
                 object=obj["id"],

@@ -5,8 +5,10 @@ For a scene folder with a robot (``holomj generate ... --robot jaco``) it propos
 the time to make the environment (load ``scene.xml``, compile, build the task's predicate), the
 median reset time over ``--resets`` resets, and environment steps per second with random actions
 over ``--steps`` steps (each step ``frame_skip`` physics steps plus the predicate), beside the
-raw ``mj_step`` rate of the same model. With ``--script`` it also runs the scripted drawer
-policy on every drawer's open task (tries, successes, steps). Writes JSON::
+raw ``mj_step`` rate of the same model; then ``--episodes`` episodes of ``--episode-steps``
+steps per task kind, half doing nothing and half random, counting false successes. With
+``--script`` it also runs the scripted policy on every open task (drawers and doors: tries,
+successes, steps). Writes JSON::
 
     python scripts/bench_envs.py OUT --out bench_results/envs.json [--steps 2000] [--script]
 """
@@ -25,7 +27,7 @@ import mujoco
 import numpy as np
 
 from holomj import envs
-from holomj.envs.scripted import open_drawer
+from holomj.envs.scripted import open_part
 from holomj.jobs.tasks import propose_folder_tasks
 from holomj.spec.tasks import ArticulationTask, Task
 
@@ -61,6 +63,25 @@ def bench_task(folder: Path, task: Task, steps: int, resets: int) -> dict:
     }
 
 
+def false_successes(folder: Path, task: Task, episodes: int, steps: int) -> dict:
+    """Episodes judged successful with no action (the first half) or random actions."""
+    env = envs.make(folder, task, max_episode_steps=steps)
+    rng = np.random.default_rng(0)
+    judged = {"nothing": 0, "random": 0}
+    for episode in range(episodes):
+        policy = "nothing" if episode < episodes // 2 else "random"
+        env.reset(seed=episode)
+        for _ in range(steps):
+            action = np.zeros(env.action_space.shape)
+            if policy == "random":
+                action = rng.uniform(-1, 1, env.action_space.shape)
+            _, _, terminated, truncated, _ = env.step(action)
+            if terminated or truncated:
+                judged[policy] += int(terminated)
+                break
+    return {"task": task.id, "episodes": episodes, "steps": steps, "successes": judged}
+
+
 def raw_physics_rate(folder: Path, steps: int) -> float:
     """``mj_step`` per second on the folder's model, nothing else."""
     model = mujoco.MjModel.from_xml_path(str(folder / "scene.xml"))
@@ -72,15 +93,13 @@ def raw_physics_rate(folder: Path, steps: int) -> float:
 
 
 def scripted(folder: Path, tasks: list[Task]) -> dict:
-    """The scripted drawer policy on every drawer's open task."""
+    """The scripted policy on every open task (drawers and doors)."""
     results = []
     for task in tasks:
         if not (isinstance(task, ArticulationTask) and task.kind == "open"):
             continue
-        if "drawer" not in task.joint:
-            continue
         start = time.perf_counter()
-        result = open_drawer(envs.make(folder, task, max_episode_steps=600))
+        result = open_part(envs.make(folder, task, max_episode_steps=600))
         results.append(
             {
                 "task": task.id,
@@ -102,7 +121,9 @@ def main() -> int:
     parser.add_argument("--out", type=Path, default=None, help="JSON file (default: stdout)")
     parser.add_argument("--steps", type=int, default=2000)
     parser.add_argument("--resets", type=int, default=50)
-    parser.add_argument("--script", action="store_true", help="run the scripted drawer policy")
+    parser.add_argument("--episodes", type=int, default=100, help="per kind, for false successes")
+    parser.add_argument("--episode-steps", type=int, default=100)
+    parser.add_argument("--script", action="store_true", help="run the scripted open policy")
     args = parser.parse_args()
     tasks = list(propose_folder_tasks(args.folder, limit=1000, write=False).tasks)
     first: dict[str, Task] = {}
@@ -118,7 +139,7 @@ def main() -> int:
         ],
     }
     if args.script:
-        result["scripted_drawers"] = scripted(args.folder, tasks)
+        result["scripted_open"] = scripted(args.folder, tasks)
     text = json.dumps(result, indent=2) + "\n"
     if args.out is None:
         sys.stdout.write(text)

@@ -1,18 +1,19 @@
-"""A scripted policy that opens a drawer with the project's inverse kinematics.
+"""A scripted policy that opens a drawer or a door with the project's inverse kinematics.
 
-:func:`open_drawer` takes an environment whose task opens a slide joint: it moves the robot's
+:func:`open_part` takes an environment whose task opens a part with a handle: it moves the robot's
 base (a static body: no recompiling) to the free spot in front of the handle that
 :func:`holomj.robots.reach_handle.reach_handle` finds, drives the arm to joint targets solved by
 the same inverse kinematics (in front of the handle, then onto it), closes the fingers, and pulls
-along the handle's pull direction in small Cartesian steps (damped least squares on the site's
-Jacobian from the current joints, so the arm never jumps to another solution), until the task's
-predicate reports success.
+along the handle's path (straight out for a drawer, on its circle about the hinge for a door) in
+small Cartesian steps (damped least squares on the site's Jacobian from the current joints, so
+the arm never jumps to another solution), until the task's predicate reports success.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -41,18 +42,16 @@ class ScriptResult:
     reached: bool
 
 
-def open_drawer(env: SceneArmEnv, seed: int = 0) -> ScriptResult:
-    """Run one scripted episode of ``env``'s open task (a slide joint with a handle)."""
+def open_part(env: SceneArmEnv, seed: int = 0) -> ScriptResult:
+    """Run one scripted episode of ``env``'s open task: a drawer (slide joint) or a door or
+    lid (hinge joint) with a handle."""
     task = env.task
     if not isinstance(task, ArticulationTask) or task.kind != "open":
         raise InputError(f"task {task.id!r} is not an open task", fix="pass an open task's env")
     record = SceneObjects(env.record).joint(task.object, task.joint)
     handle = record.get("handle")
-    if record["type"] != "slide" or handle is None:
-        raise InputError(
-            f"joint {task.joint!r} is not a drawer's slide with a handle",
-            fix="script a drawer (a slide joint) of the scene",
-        )
+    if handle is None:
+        raise InputError(f"joint {task.joint!r} has no handle", fix="script a part with a handle")
     position = np.asarray(handle["position"], dtype=float)
     pull = np.asarray(handle["pull"], dtype=float)
     spot = reach_handle(env.model, handle["position"], handle["pull"], seed=seed, label=task.joint)
@@ -73,9 +72,7 @@ def open_drawer(env: SceneArmEnv, seed: int = 0) -> ScriptResult:
         if done.over:
             return ScriptResult(done.success, steps, spot.base, spot.reached)
     site = mujoco.mj_name2id(env.model, mujoco.mjtObj.mjOBJ_SITE, spot.site)
-    goal = env.data.site_xpos[site].copy()
-    for _ in range(round(PULL_M / PULL_STEP_M)):
-        goal += PULL_STEP_M * pull
+    for goal in _pull_path(record, env.data.site_xpos[site].copy(), pull):
         env.set_joint_targets(_toward(env, site, goal))
         done = _hold(env, 1)
         steps += done.steps
@@ -83,6 +80,35 @@ def open_drawer(env: SceneArmEnv, seed: int = 0) -> ScriptResult:
             return ScriptResult(done.success, steps, spot.base, spot.reached)
     done = _hold(env, SETTLE_STEPS)
     return ScriptResult(done.success, steps + done.steps, spot.base, spot.reached)
+
+
+def _pull_path(record: dict[str, Any], start: np.ndarray, pull: np.ndarray) -> list[np.ndarray]:
+    """Where the hand goes, step by step, to open the part: straight along the pull direction
+    for a slide; on the handle's circle about the hinge's axis for a hinge, the way that starts
+    along the pull direction, to the far end of the joint's range."""
+    count = round(PULL_M / PULL_STEP_M)
+    if record["type"] == "slide":
+        return [start + (k + 1) * PULL_STEP_M * pull for k in range(count)]
+    axis = np.asarray(record["axis"], dtype=float)
+    anchor = np.asarray(record["anchor"], dtype=float)
+    arm = start - anchor
+    radial = arm - axis * float(axis @ arm)
+    radius = float(np.linalg.norm(radial))
+    if radius < 0.05:
+        return []
+    sign = 1.0 if float(np.cross(axis, radial) @ pull) >= 0.0 else -1.0
+    low, high = (float(v) for v in record["range"])
+    span = max(abs(high - record["closed"]), abs(low - record["closed"]))
+    steps = max(1, round(span * radius / PULL_STEP_M))
+    return [
+        anchor + axis * float(axis @ arm) + _rotate(radial, axis, sign * span * (k + 1) / steps)
+        for k in range(steps)
+    ]
+
+
+def _rotate(vector: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
+    """``vector`` (perpendicular to the unit ``axis``) turned by ``angle`` about it."""
+    return vector * math.cos(angle) + np.cross(axis, vector) * math.sin(angle)
 
 
 @dataclass(frozen=True)

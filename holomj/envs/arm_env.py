@@ -9,8 +9,10 @@
 - **Reward**: 1 on success (the task's predicate, held for its ``hold_s``: the episode then
   terminates), minus ``shaping`` times the predicate's distance to success when ``shaping`` > 0.
 - **Reset**: ``mj_resetData`` restores the validated scene (``qpos0``: the poses ``objects.json``
-  records) on the model compiled once at construction, then the task's start state (a close
-  task's part opened to its ``start``); episodes are truncated after ``max_episode_steps``.
+  records) on the model compiled once at construction; with ``redrop_m`` > 0 the small objects
+  standing in the open are moved by up to that much and turned, from the reset's seed
+  (:mod:`holomj.envs.redrop`); then the task's start state (a close task's part opened to its
+  ``start``). Episodes are truncated after ``max_episode_steps``.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ import mujoco
 import numpy as np
 from gymnasium import spaces
 
+from holomj.envs.redrop import droppable_objects, redrop
 from holomj.envs.servo import DEFAULT_BANDWIDTH, JointServo
 from holomj.envs.targets import TaskTargets
 from holomj.spec.tasks import ArticulationTask, Task
@@ -51,6 +54,7 @@ class SceneArmEnv(gym.Env[dict[str, Any], np.ndarray]):
         action_mode: str = "delta",
         shaping: float = 0.0,
         max_episode_steps: int = MAX_EPISODE_STEPS,
+        redrop_m: float = 0.0,
         render_mode: str | None = None,
     ) -> None:
         if action_mode not in ("delta", "position"):
@@ -71,6 +75,8 @@ class SceneArmEnv(gym.Env[dict[str, Any], np.ndarray]):
         self.action_mode = action_mode
         self.shaping = shaping
         self.max_episode_steps = max_episode_steps
+        self.redrop_m = redrop_m
+        self.droppable = droppable_objects(model, record) if redrop_m > 0.0 else []
         self.render_mode = render_mode
         self._renderer: mujoco.Renderer | None = None
         self._target = self.servo.home.copy()
@@ -97,6 +103,8 @@ class SceneArmEnv(gym.Env[dict[str, Any], np.ndarray]):
         """Restore the validated scene and the task's start state (no recompiling)."""
         super().reset(seed=seed)
         mujoco.mj_resetData(self.model, self.data)
+        if self.droppable:
+            redrop(self.data, self.droppable, self.redrop_m, self.np_random)
         self._start_state()
         mujoco.mj_forward(self.model, self.data)
         self.check.reset()

@@ -104,3 +104,27 @@ def test_bad_input_is_refused_with_the_reason(kitchen: Path, tmp_path: Path) -> 
     assert envs.make(folder, tasks.tasks[0].id).task == tasks.tasks[0]
     with pytest.raises(InputError, match="not a holomj scene folder"):
         envs.make(tmp_path, {"kind": "navigate", "id": "n", "room": "kitchen"})
+
+
+def test_a_reset_can_move_the_small_objects_from_its_seed(kitchen: Path, tasks) -> None:
+    task = next(t for t in tasks if t.kind == "pick_place")
+    env = envs.make(kitchen, task, redrop_m=0.05)
+    assert env.droppable, "the kitchen has small objects standing in the open"
+    adr = [d.qpos_adr for d in env.droppable]
+
+    def poses(seed: int) -> np.ndarray:
+        env.reset(seed=seed)
+        return np.array([env.data.qpos[a : a + 7] for a in adr])
+
+    first, again, other = poses(3), poses(3), poses(4)
+    np.testing.assert_allclose(first, again)
+    assert not np.allclose(first, other)
+    home = np.array([env.model.qpos0[a : a + 7] for a in adr])
+    assert np.abs(first[:, :2] - home[:, :2]).max() <= 0.05 + 1e-9
+    for _ in range(50):  # they drop back and stay: nothing is judged placed by moving them
+        _, reward, terminated, _, _ = env.step(np.zeros(env.action_space.shape))
+        assert not terminated and reward == 0.0
+    model = env.model
+    dofs = [int(model.jnt_dofadr[list(model.jnt_qposadr).index(a)]) for a in adr]
+    speeds = [float(np.abs(env.data.qvel[d : d + 3]).max()) for d in dofs]
+    assert max(speeds) < 0.05, speeds

@@ -137,6 +137,10 @@ def main() -> int:
         "environments": [
             bench_task(args.folder, t, args.steps, args.resets) for t in first.values()
         ],
+        "false_successes": {
+            kind: false_successes(args.folder, t, args.episodes, args.episode_steps)
+            for kind, t in first.items()
+        },
     }
     if args.script:
         result["scripted_open"] = scripted(args.folder, tasks)

@@ -2,7 +2,7 @@
 ``tasks.json`` (the job: :mod:`holomj.jobs.tasks`; the format: ``holomj schema task``).
 
 Exit codes: 0 when tasks were written, 2 for bad input (not a scene folder, no objects.json,
-N below 1), 1 for a failure of ours.
+N below 1, a task in ``--prompt`` the scene cannot do, with the reason), 1 for a failure of ours.
 """
 
 from __future__ import annotations
@@ -20,14 +20,21 @@ def tasks_command(
     count: Annotated[
         int, typer.Option("-n", "--count", help="Propose at most this many tasks.")
     ] = 10,
+    prompt: Annotated[
+        str | None,
+        typer.Option(
+            "--prompt",
+            help='Tasks in words instead: "open the fridge, then put the mug in the sink".',
+        ),
+    ] = None,
     as_json: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
     """Propose feasible tasks (open/close parts, pick-and-place, rearrange, navigate) for a
-    scene folder and write its tasks.json. --json prints it."""
+    scene folder, or read the ones --prompt names, and write its tasks.json. --json prints it."""
     from holomj.jobs.tasks import propose_folder_tasks
 
-    tasks = guard(lambda: propose_folder_tasks(folder, count))
+    tasks = guard(lambda: propose_folder_tasks(folder, count, prompt=prompt))
     if as_json:
         emit_json(tasks.model_dump(mode="json"))
         return

@@ -12,6 +12,7 @@ from holomj.jobs.folder import read_json_report, require_scene_folder, write_rep
 from holomj.spec.base import read_json, validate_model
 from holomj.spec.tasks import TaskSet
 from holomj.tasks.propose import propose_tasks
+from holomj.tasks.words import tasks_from_words
 
 
 def read_objects(folder: Path) -> dict[str, Any]:
@@ -25,15 +26,22 @@ def read_objects(folder: Path) -> dict[str, Any]:
     return record
 
 
-def propose_folder_tasks(folder: Path, limit: int = 10, *, write: bool = True) -> TaskSet:
-    """At most ``limit`` feasible tasks for the scene in ``folder``, written to its
-    ``tasks.json`` unless not ``write``. Bad input (not a scene folder, no objects.json, a
-    limit below 1) is an InputError."""
+def propose_folder_tasks(
+    folder: Path, limit: int = 10, *, write: bool = True, prompt: str | None = None
+) -> TaskSet:
+    """At most ``limit`` feasible tasks for the scene in ``folder`` (with ``prompt``: the tasks
+    it names in words, :mod:`holomj.tasks.words`), written to its ``tasks.json`` unless not
+    ``write``. Bad input (not a scene folder, no objects.json, a limit below 1, a task in words
+    the scene cannot do) is an InputError with the reason."""
     folder = require_scene_folder(Path(folder))
     if limit < 1:
         raise InputError(f"cannot propose {limit} tasks", fix="pass -n 1 or more")
-    navmap = read_json_report(folder, NAVMAP_JSON)
-    tasks = propose_tasks(read_objects(folder), navmap if isinstance(navmap, dict) else None, limit)
+    objects = read_objects(folder)
+    if prompt is not None:
+        tasks = tasks_from_words(prompt, objects)
+    else:
+        navmap = read_json_report(folder, NAVMAP_JSON)
+        tasks = propose_tasks(objects, navmap if isinstance(navmap, dict) else None, limit)
     if write:
         write_report(folder, TASKS_JSON, tasks.model_dump(mode="json"))
     return tasks

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
+from rich.markup import escape
 
 from holomj.cli.options import (
     JsonOption,
@@ -27,51 +28,82 @@ from holomj.cli.options import (
 from holomj.cli.output import emit_json, guard, library_root, out_console, spinner
 from holomj.importers.detect import FORMATS
 
+InputArgument = Annotated[
+    Path,
+    typer.Argument(
+        metavar="INPUT",
+        help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.",
+    ),
+]
+
+FormatOption = Annotated[
+    str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
+]
+
+CheckSecondsOption = Annotated[
+    float,
+    typer.Option(
+        "--check-seconds",
+        min=0.0,
+        max=60.0,
+        help="Seconds to simulate as a smoke test (0 skips).",
+    ),
+]
+
+FixOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--fix/--no-fix",
+        help="Make the scene stand: objects on the floor or dropped onto their receptacles, "
+        "clear of walls and each other, settled and validated (default: on for "
+        "ProcTHOR/Holodeck houses and SceneDefs, off for holomj scenes).",
+        show_default=False,
+    ),
+]
+
+AllowInvalidOption = Annotated[
+    bool,
+    typer.Option(
+        "--allow-invalid",
+        help="Write the scene even when objects could not be made to stand (marked "
+        '"valid": false in import_report.json).',
+    ),
+]
+
+StrictOption = Annotated[
+    bool,
+    typer.Option(
+        "--strict",
+        help="Refuse the house (exit 1, nothing written) when any object would be left "
+        "out; by default what cannot stand anywhere is left out and listed.",
+    ),
+]
+
+ObjathorOption = Annotated[
+    Path | None,
+    typer.Option(
+        "--objathor",
+        help="objathor asset folder: the Objaverse assets a Holodeck house names by uid "
+        "are imported from it into the library first, so the real meshes are used where "
+        "it has them (stand-ins of the same kind elsewhere).",
+    ),
+]
+
 
 def compile_command(
-    input_path: Annotated[
-        Path,
-        typer.Argument(
-            metavar="INPUT",
-            help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.",
-        ),
-    ],
+    input_path: InputArgument,
     out: OutFolderOption,
-    fmt: Annotated[
-        str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
-    ] = None,
+    fmt: FormatOption = None,
     library: LibraryOption = None,
     overwrite: OverwriteOption = False,
-    check_seconds: Annotated[
-        float,
-        typer.Option(
-            "--check-seconds",
-            min=0.0,
-            max=60.0,
-            help="Seconds to simulate as a smoke test (0 skips).",
-        ),
-    ] = 1.0,
+    check_seconds: CheckSecondsOption = 1.0,
     robot: RobotOption = None,
     profile: ProfileOption = "default",
     seed: SeedOption = 0,
-    fix: Annotated[
-        bool | None,
-        typer.Option(
-            "--fix/--no-fix",
-            help="Make the scene stand: objects on the floor or dropped onto their receptacles, "
-            "clear of walls and each other, settled and validated (default: on for "
-            "ProcTHOR/Holodeck houses and SceneDefs, off for holomj scenes).",
-            show_default=False,
-        ),
-    ] = None,
-    allow_invalid: Annotated[
-        bool,
-        typer.Option(
-            "--allow-invalid",
-            help="Write the scene even when objects could not be made to stand (marked "
-            '"valid": false in import_report.json).',
-        ),
-    ] = False,
+    fix: FixOption = None,
+    allow_invalid: AllowInvalidOption = False,
+    strict: StrictOption = False,
+    objathor: ObjathorOption = None,
     as_json: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
@@ -93,6 +125,8 @@ def compile_command(
                 seed=seed,
                 fix=fix,
                 allow_invalid=allow_invalid,
+                strict=strict,
+                objathor=objathor,
             )
         )
     if as_json:
@@ -134,16 +168,32 @@ def _print_stand(stand: dict) -> None:
         f"{before['count']} (max {before['max_m'] * 1000:.0f} mm) -> {after['count']} "
         f"(max {after['max_m'] * 1000:.1f} mm)"
     )
-    validation = stand.get("validation")
+    _print_kept(stand)
+    validation = stand.get("validation") or {}
     if stand["valid"]:
         out_console.print(
             f"  [green]valid:[/] {validation['stable']}/{validation['objects']} objects stable"
         )
         return
-    unsaved = stand["unsaved"]
     out_console.print(
-        f"  [bold red]INVALID[/] (written with --allow-invalid): {len(unsaved)} object(s) "
-        "could not be made to stand (see import_report.json)"
+        f"  [bold red]INVALID[/] (written with --allow-invalid): {escape(str(stand['refusal']))}"
     )
-    for row in unsaved[:8]:
+    for row in stand["unsaved"][:8]:
         out_console.print(f"    {row['object']}: {row['why']}", markup=False)
+
+
+def _print_kept(stand: dict) -> None:
+    """The objects moved to another receptacle or left out, and the share kept."""
+    relocated, left = stand.get("relocated", []), stand.get("left_out", [])
+    if not relocated and not left:
+        return
+    out_console.print(
+        f"  kept {stand['objects_kept']}/{stand['objects_imported']} objects "
+        f"({stand['kept_share']:.1%}): {len(relocated)} moved to another receptacle, "
+        f"{len(left)} left out (see import_report.json)"
+    )
+    for row in (relocated + left)[:8]:
+        to = row["to"]["support"] if row["to"] else "left out"
+        out_console.print(
+            f"    {row['object']}: {row['from']['support']} -> {to}: {row['why']}", markup=False
+        )

@@ -3,7 +3,7 @@
 The layout solver lays out a whole room; an edit must not move what it does not touch, so a new
 (or moved, or replaced) floor object is placed by a search over free floor poses instead: every
 centre on the layout's 5 cm grid and every quarter turn (or the one yaw asked), in the room's
-layout polygon (inset from the walls as :mod:`holomj.layout.room_furnishing` does it). The
+layout polygon (inset from the walls as :mod:`holomj.compose.room_furnishing` does it). The
 checks are the layout's hard rules, in metres, against the real footprints of everything in the
 room (turned by any yaw):
 
@@ -51,9 +51,9 @@ from holomj.edit.footprints import (
 )
 from holomj.edit.state import Refused
 from holomj.layout import geometry as geo
-from holomj.layout.constraints import Constraint
+from holomj.layout.constraints import OPENING_KINDS, Constraint
+from holomj.layout.furniture_rules import DOOR_CLEARANCE_M, WALKER_RADIUS_M
 from holomj.layout.geometry import LAYOUT_MARGIN_M
-from holomj.layout.room_furnishing import DOOR_CLEARANCE_M, WALKER_RADIUS_M
 from holomj.layout.room_problem import (
     LayoutObject,
     LayoutSettings,
@@ -69,7 +69,6 @@ CLEARANCE_M = 0.05
 FRONT_CLEARANCE_M = 0.3
 MAX_TRIES = 1500
 NEW = "new"  # the layout name of the object being placed
-_OPENING_KINDS = frozenset({"by_window", "under_window", "facing_window", "by_door", "facing_door"})
 
 
 @dataclass(frozen=True)
@@ -356,7 +355,7 @@ class RoomFloor:
                 else:
                     out += np.hypot(dx, dy)
                 used = True
-            elif wish.kind in _OPENING_KINDS:
+            elif wish.kind in OPENING_KINDS:
                 spans = prep.anchors.doors if "door" in wish.kind else prep.anchors.windows
                 if spans:
                     out += np.min([np.hypot(xs - o.center[0], ys - o.center[1]) for o in spans], 0)

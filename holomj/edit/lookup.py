@@ -10,7 +10,7 @@ from holomj.edit.state import (
     Refused,
     find,
 )
-from holomj.layout.room_furnishing import object_id
+from holomj.layout.furniture_rules import object_id
 from holomj.library.store import AssetLibrary
 from holomj.spec.edit import EditRelation
 from holomj.spec.plan import instance_name

@@ -33,7 +33,7 @@ from holomj.edit.state import (
     with_objects,
 )
 from holomj.edit.wishes import default_wishes, described_wishes, wishes_of
-from holomj.layout.room_furnishing import FIXED_CATEGORIES
+from holomj.layout.furniture_rules import FIXED_CATEGORIES
 from holomj.spec.assets import AssetMeta
 from holomj.spec.edit import AddOp, MoveOp, RemoveOp, ReplaceOp
 from holomj.spec.scene import SceneObject, SceneSpec

@@ -18,8 +18,8 @@ from holomj.edit.state import (
     find,
 )
 from holomj.errors import HolomjError
+from holomj.layout.furniture_rules import FIXED_CATEGORIES, WALL_KINDS
 from holomj.layout.geometry import LAYOUT_MARGIN_M
-from holomj.layout.room_furnishing import FIXED_CATEGORIES, WALL_KINDS
 from holomj.layout.wall_objects import FloorItem, WallObjectRequest, place_wall_objects
 from holomj.library.store import AssetLibrary
 from holomj.spec.edit import AddOp

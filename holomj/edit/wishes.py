@@ -18,26 +18,11 @@ from holomj.layout.constraints import PHRASES, RELATION_WEIGHT, normalize_phrase
 from holomj.library.store import AssetLibrary
 from holomj.plan.knowledge import knowledge_base
 from holomj.spec.edit import EditRelation
+from holomj.spec.relations import EDIT_CONSTRAINTS
 from holomj.spec.scene import SceneSpec
 
 # Edit relation kinds -> layout constraint kinds (several: all of them).
-CONSTRAINTS: dict[str, tuple[str, ...]] = {
-    "corner": ("corner",),
-    "wall": ("edge",),
-    "middle": ("middle",),
-    "under_window": ("under_window",),
-    "by_window": ("by_window",),
-    "by_door": ("by_door",),
-    "facing_window": ("facing_window",),
-    "facing_door": ("facing_door",),
-    "adjacent_to": ("adjacent_to",),
-    "near": ("near",),
-    "in_front_of": ("in_front_of",),
-    "behind": ("behind",),
-    "facing": ("face_to",),
-    "across_from": ("face_to",),
-    "around": ("adjacent_to", "face_to"),
-}
+CONSTRAINTS = EDIT_CONSTRAINTS
 
 
 def wishes_of(

@@ -13,7 +13,8 @@ from holomj.jobs.stage_log import Listener, StageLog
 if TYPE_CHECKING:
     from holomj.spec.plan import ScenePlan
 
-PLANNERS = ("offline", "llm")
+Planner = Literal["offline", "llm"]
+PLANNERS: tuple[Planner, ...] = ("offline", "llm")
 
 
 @dataclass(frozen=True)
@@ -21,7 +22,7 @@ class PlanOptions:
     """What the plan stage needs: the seed, which planner, the text model and the LLM server."""
 
     seed: int = 0
-    planner: Literal["offline", "llm"] = "offline"
+    planner: str = "offline"  # checked by check_planner
     text_model: Path | None = None
     llm_base_url: str | None = None
     llm_model: str | None = None
@@ -29,13 +30,12 @@ class PlanOptions:
     llm_config: Path | None = None
 
 
-def check_planner(planner: str) -> Literal["offline", "llm"]:
+def check_planner(planner: str) -> Planner:
     """``planner`` when it is a planner's name, else an InputError naming ``--planner``."""
-    if planner not in PLANNERS:
-        raise InputError(
-            f"unknown planner {planner!r}", where="--planner", fix="use offline or llm"
-        )
-    return planner  # type: ignore[return-value]
+    for name in PLANNERS:
+        if planner == name:
+            return name
+    raise InputError(f"unknown planner {planner!r}", where="--planner", fix="use offline or llm")
 
 
 def plan_scene(

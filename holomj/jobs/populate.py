@@ -31,6 +31,7 @@ from holomj.file_names import POPULATE_REPORT, RENDERS_DIR, REPORT_HTML, REPORT_
 from holomj.jobs.folder import (
     attach_folder_robot,
     open_library,
+    prepare_output,
     read_json_report,
     read_scene,
     require_scene_folder,
@@ -120,6 +121,7 @@ def populate_folder(
     ``instruction``, or an unknown planner.
     """
     folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
+    prepared = prepare_output(folder, overwrite=True)  # rewritable, before any work
     if isinstance(requests, str):
         requests = parse_objects(requests)
     if instruction is not None:
@@ -251,7 +253,7 @@ def populate_folder(
     stale = [name for name in (RENDERS_DIR, REPORT_HTML) if (folder / name).exists()]
     report = {**run, "runs": [*previous, run], "stale_files": stale}
     written[POPULATE_REPORT] = report
-    write_scene_folder(compiled, folder, overwrite=True, extra_json=written, keep_from=folder)
+    write_scene_folder(compiled, prepared, extra_json=written, keep_from=folder)
     return PopulateResult(
         folder=str(folder),
         receptacle=receptacle_id,

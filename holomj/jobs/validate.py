@@ -14,6 +14,7 @@ from holomj.errors import InputError
 from holomj.jobs.folder import (
     attach_folder_robot,
     load_for_physics,
+    prepare_output,
     scene_folder,
     write_scene_folder,
 )
@@ -78,6 +79,7 @@ def repair_folder(
 ) -> RepairOutcome:
     """Repair the holomj folder at ``path`` and write it back atomically (other files kept)."""
     folder = outcome_folder(path)
+    prepared = prepare_output(folder, overwrite=True)  # rewritable, before any work
     loaded = load_for_physics(folder, furniture=furniture)
     library = loaded.library
 
@@ -85,5 +87,5 @@ def repair_folder(
         return attach_folder_robot(compile_scene(scene, library, furniture=mode), folder)
 
     outcome = repair_scene(loaded, recompile, thresholds, furniture, sleep)
-    write_scene_folder(outcome.compiled, folder, overwrite=True, keep_from=folder)
+    write_scene_folder(outcome.compiled, prepared, keep_from=folder)
     return outcome

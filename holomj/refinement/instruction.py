@@ -29,7 +29,6 @@ What cannot be used (an unknown room, a relation to nothing in the scene) is kep
 from __future__ import annotations
 
 import re
-from typing import get_args
 
 from holomj.evaluation.vocabulary import Vocabulary
 from holomj.plan.knowledge import knowledge_base
@@ -39,33 +38,15 @@ from holomj.plan.prompt import ObjectRequest, ParsedPrompt, parse_prompt
 from holomj.refinement.clauses import TO_PLACE, clause_verb, split_clauses
 from holomj.refinement.instruction_items import Instruction, Item
 from holomj.refinement.summary import ObjectInfo, RoomInfo, SceneSummary
-from holomj.spec.edit import EditPlaceKind
+from holomj.spec.relations import EDIT_KIND_OF, EDIT_PLACE_KINDS, kinds_about
 
 MAX_QUANTITY = 6
 PLURAL_QUANTITY = 2
 
 ZONE_WORDS = ("corner", "nook", "area", "zone", "spot", "space", "station", "set up", "setup")
-# Edit relation kinds (holomj.spec.edit) of the parser's relation kinds.
-EDIT_KINDS = {
-    "corner": "corner",
-    "wall": "wall",
-    "middle": "middle",
-    "under_window": "under_window",
-    "by_window": "by_window",
-    "by_door": "by_door",
-    "facing_window": "facing_window",
-    "facing_door": "facing_door",
-    "adjacent_to": "adjacent_to",
-    "both_sides": "adjacent_to",
-    "near": "near",
-    "in_front_of": "in_front_of",
-    "behind": "behind",
-    "facing": "facing",
-    "across_from": "across_from",
-    "around": "around",
-    "above": "above",
-}
-PLACE_KINDS = frozenset(get_args(EditPlaceKind))
+# Edit relation kinds (holomj.spec.edit) of the parser's relation kinds; the places among them.
+EDIT_KINDS = EDIT_KIND_OF
+PLACE_KINDS = frozenset(EDIT_PLACE_KINDS)
 
 
 def read_instruction(
@@ -368,9 +349,9 @@ class _Clause:
                 return obj.room
         rooms = list(self.scene.rooms)
         kinds = {r[0] for r in item.relations}
-        if kinds & {"by_window", "under_window", "facing_window"}:
+        if kinds & kinds_about("window"):
             rooms = [r for r in rooms if r.windows] or rooms
-        if kinds & {"by_door", "facing_door"}:
+        if kinds & kinds_about("door"):
             rooms = [r for r in rooms if r.doors] or rooms
         belongs = set()
         if item.kind in self.kb.objects:

@@ -32,10 +32,7 @@ import numpy as np
 from typing_extensions import Unpack
 
 from holomj.errors import InputError
-from holomj.library.store import (
-    AssetLibrary,
-    normalise_category,
-)
+from holomj.library.store import AssetLibrary
 from holomj.retrieval.ranking import AssetRanker, RankerOptions
 from holomj.retrieval.scores import (
     DEFAULT_WEIGHTS,
@@ -47,11 +44,12 @@ from holomj.retrieval.scores import (
 )
 from holomj.retrieval.text import TextEncoder
 from holomj.retrieval.visual import visual_scorer_from_env
+from holomj.spec.categories import asset_axes, normalise_category
 
 SIMILARITY_FLOOR = 0.8
 """Least text cosine between two category names for one to stand in for the other (with the
 default MiniLM encoder, couch/sofa and bookcase/bookshelf pass; treadmill/desk, 0.2-0.4, and
-kettlebell/pot do not). Listed aliases (``category_aliases.json``) always pass."""
+kettlebell/pot do not). Listed stand-ins (``category_facts.json``) always pass."""
 SYNTH_STYLES = 4
 """Style seeds an asset made on demand is drawn from (the run's generator picks one)."""
 VARIED_POOL = 3
@@ -225,7 +223,7 @@ class AssetRetriever(AssetRanker):
         asked: dict[str, str],
         rng: np.random.Generator,
     ) -> ScoredAsset:
-        target = None if size is None else _asset_size(check_size(size, description))
+        target = None if size is None else asset_axes(check_size(size, description))
         seed = int(rng.integers(SYNTH_STYLES))
         made = self.synthesiser.synthesise(category, target, seed, asked)
         for note in made.notes:
@@ -241,7 +239,7 @@ class AssetRetriever(AssetRanker):
         asked: dict[str, str],
     ) -> ScoredAsset:
         label = category or description
-        target = _asset_size(check_size(size, description)) if size is not None else None
+        target = asset_axes(check_size(size, description)) if size is not None else None
         if target is None:
             target = _DEFAULT_PROXY_SIZE.get(placement, (0.5, 0.5, 0.5))
         made = self.synthesiser.proxy(label, target, placement, asked)
@@ -304,12 +302,6 @@ _DEFAULT_PROXY_SIZE = {
     "ceiling": (0.5, 0.5, 0.4),
     "object": (0.15, 0.15, 0.15),
 }
-
-
-def _asset_size(size: tuple[float, float, float]) -> tuple[float, float, float]:
-    """A plan size (width, depth, height) as an asset size (x = depth, y = width, z)."""
-    width, depth, height = size
-    return (depth, width, height)
 
 
 def _matches(recorded: dict[str, str], hard: dict[str, str]) -> bool:

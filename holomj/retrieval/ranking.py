@@ -18,7 +18,7 @@
 Defaults α = 100, β = 1, γ = 10 as in Holodeck. Candidates are the assets whose placement
 flags include the requested placement (``builtin:box`` never competes). A category hint
 restricts them to that category when the library has it, else to its aliases
-(``category_aliases.json``); with neither, everything is scored and a note says so.
+(``category_facts.json``); with neither, everything is scored and a note says so.
 Ranking is by score, ties by asset id, so results are deterministic.
 
 Embeddings of asset texts and thumbnails are cached in ``LIB/.cache/retrieval/``
@@ -138,7 +138,7 @@ class AssetRanker:
         return self._top(description, size, rows, limit)
 
     def _of_category(self, placed: np.ndarray, category: str) -> np.ndarray:
-        """Rows of ``placed`` of ``category``, else of its aliases (``category_aliases.json``)."""
+        """Rows of ``placed`` of ``category``, else of its stand-ins (``category_facts.json``)."""
         key = normalise_category(category)
         exact = self.index.of_categories(placed, {key})
         if exact.size:

@@ -17,6 +17,7 @@ from typing import Annotated, Any, Literal
 from pydantic import Field, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
+from holomj.spec.relations import PlanRelationKind
 
 PLAN_SCHEMA_VERSION: Literal["1.0"] = "1.0"
 
@@ -111,30 +112,6 @@ class PlanWindows(FrozenModel):
 
     count: Annotated[int, Field(ge=0, le=12)] | None = None
     kind: Literal["fixed", "hung", "slider"] | None = None
-
-
-PlanRelationKind = Literal[
-    "corner",
-    "wall",
-    "middle",
-    "under_window",
-    "by_window",
-    "by_door",
-    "facing_window",
-    "facing_door",
-    "adjacent_to",
-    "near",
-    "in_front_of",
-    "behind",
-    "facing",
-    "across_from",
-    "around",
-    "both_sides",
-    "in_row",
-    "on",
-    "above",
-    "ceiling",
-]
 
 
 class PlanRelation(FrozenModel):

@@ -13,6 +13,10 @@ import pytest
 from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 
+from holomj.compose.house_shell import build_shell
+from holomj.compose.room_assets import retrieve_room
+from holomj.compose.room_context import RoomContext
+from holomj.compose.room_furnishing import furnish_room
 from holomj.layout.counter_run_arrangements import (
     FILLER_MAX_M,
     SHAPES,
@@ -21,9 +25,8 @@ from holomj.layout.counter_run_arrangements import (
     leg_ends,
 )
 from holomj.layout.counter_runs import solve_counter_run
+from holomj.layout.furniture_rules import object_id
 from holomj.layout.geometry import LAYOUT_MARGIN_M
-from holomj.layout.house_shell import build_shell
-from holomj.layout.room_furnishing import RoomContext, furnish_room, object_id, retrieve_room
 from holomj.layout.room_problem import LayoutDoor, LayoutObject, RoomProblem
 from holomj.layout.solve import solve_room
 from holomj.library.store import AssetLibrary

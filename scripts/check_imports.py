@@ -115,16 +115,24 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
         "pointing",
         _holomj("spec plan evaluation"),
     ),
+    "holomj.tasks": (
+        "robot tasks: success predicates on MuJoCo state and objects.json, task proposals",
+        _holomj("spec"),
+    ),
     "holomj.jobs": (
         "one module per user-facing job; the output folder (atomic I/O)",
         (
             *_holomj(
                 "edit refinement atomic seeds data spec library layout retrieval plan compose"
             ),
-            *_holomj("importers mjcf physics robots rendering formats evaluation"),
+            *_holomj("importers mjcf physics robots rendering formats evaluation tasks"),
             *_asset_pipeline("default_library :importers library_writer procedural"),
             *_asset_pipeline("procedural.articulated"),
         ),
+    ),
+    "holomj.envs": (
+        "Gymnasium environments on scene folders: joint servo, task targets, scripted policy",
+        _holomj("spec tasks robots jobs"),
     ),
     "holomj.batch": (
         "many jobs on a local worker pool or Ray, resumable",

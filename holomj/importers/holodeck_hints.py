@@ -20,15 +20,14 @@ known), ``"books"`` -> ``book`` (plurals). Nothing here invents a vocabulary of 
 
 from __future__ import annotations
 
-import json
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import cache
-from importlib import resources
 from typing import Any
 
 from holomj.library.store import normalise_category
+from holomj.spec.categories import KnownKind, knowledge_kinds
 
 Size = tuple[float, float, float]  # x = depth, y = width, z = height, metres
 
@@ -46,25 +45,12 @@ def base_name(text: str) -> str:
     return _INSTANCE.sub("", _ROOM_SUFFIX.sub("", first)).strip().lower()
 
 
-@dataclass(frozen=True)
-class KnownKind:
-    """A kind of the knowledge base: its library category, typical size and placement."""
-
-    category: str
-    size: Size | None
-    placement: str
-
-
 @cache
 def _knowledge_names() -> dict[str, KnownKind]:
     """Normalised name or alias -> its kind, from the knowledge base's object kinds."""
-    text = resources.files("holomj.data").joinpath("knowledge/objects.json").read_text("utf-8")
     kinds: dict[str, KnownKind] = {}
-    for name, entry in json.loads(text).get("objects", {}).items():
-        raw = entry.get("size")
-        size = (float(raw[0]), float(raw[1]), float(raw[2])) if raw and len(raw) == 3 else None
-        kind = KnownKind(entry["category"], size, str(entry.get("placement", "floor")))
-        for word in (name, entry["category"], *entry.get("aliases", [])):
+    for kind in knowledge_kinds():
+        for word in (kind.name, kind.category, *kind.aliases):
             kinds.setdefault(normalise_category(word), kind)
     return kinds
 

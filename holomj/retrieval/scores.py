@@ -5,10 +5,8 @@ the category's other names, its description) and the size term S."""
 from __future__ import annotations
 
 import functools
-import json
 from collections.abc import Sequence
 from dataclasses import dataclass
-from importlib import resources
 from typing import cast
 
 import numpy as np
@@ -16,7 +14,7 @@ import numpy as np
 from holomj.errors import InputError
 from holomj.library.store import LibraryAsset
 from holomj.spec.assets import PLACEMENTS
-from holomj.spec.categories import plan_axes
+from holomj.spec.categories import knowledge_kinds, plan_axes
 
 SIZE_CAP_M = 1.5
 
@@ -69,13 +67,10 @@ MAX_SYNONYMS = 4
 def category_synonyms() -> dict[str, tuple[str, ...]]:
     """Other names of each category, from the knowledge base's object kinds (data only: the
     kinds' names and aliases in ``holomj/data/knowledge/objects.json``)."""
-    data = json.loads(
-        resources.files("holomj.data").joinpath("knowledge/objects.json").read_text("utf-8")
-    )
     out: dict[str, list[str]] = {}
-    for name, kind in data.get("objects", {}).items():
-        names = out.setdefault(kind["category"], [])
-        for word in [name, *kind.get("aliases", [])]:
+    for kind in knowledge_kinds():
+        names = out.setdefault(kind.category, [])
+        for word in [kind.name, *kind.aliases]:
             if word not in names:
                 names.append(word)
     return {k: tuple(v) for k, v in out.items()}

@@ -14,6 +14,9 @@ typical size.
   the table layout draws from; ``knowledge/receptacles.json``, the planner's additions) and
   :func:`receptacle_table` merges the two (the shared table wins), for whoever asks "is X a
   receptacle, and of what" (the planner's knowledge base, populate's fallback priors).
+- :func:`knowledge_kinds` reads the planner's object kinds (``knowledge/objects.json``) as
+  category facts (category, typical size in the asset axes, placement, the words naming it)
+  for the readers outside the planner (the importers' name hints, retrieval's synonyms).
 
 Sizes, one convention: every size holomj stores (an asset's, a generator's, these tables',
 the planner's ``holomj/data/knowledge/objects.json`` as ``[depth, width, height]`` arrays) is
@@ -31,6 +34,7 @@ import functools
 import json
 import math
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any
 
@@ -40,6 +44,7 @@ Size = tuple[float, float, float]
 FACTS_FILE = "category_facts.json"
 SHARED_RECEPTACLES_FILE = "small_objects_on_receptacles.json"
 KNOWLEDGE_RECEPTACLES_FILE = "knowledge/receptacles.json"
+KNOWLEDGE_OBJECTS_FILE = "knowledge/objects.json"
 ReceptacleTable = dict[str, tuple[tuple[str, float], ...]]
 
 
@@ -155,3 +160,30 @@ def receptacle_table() -> ReceptacleTable:
     for key, items in receptacle_file_table(KNOWLEDGE_RECEPTACLES_FILE).items():
         table.setdefault(key, items)
     return table
+
+
+@dataclass(frozen=True)
+class KnownKind:
+    """A kind of the knowledge base: its library category, typical size (asset axes) and
+    placement, and (``name``, ``aliases``) the words that name it."""
+
+    category: str
+    size: Size | None
+    placement: str
+    name: str = field(default="", compare=False)
+    aliases: tuple[str, ...] = field(default=(), compare=False)
+
+
+@functools.cache
+def knowledge_kinds() -> tuple[KnownKind, ...]:
+    """The planner's object kinds (``knowledge/objects.json``), in file order, as category
+    facts; sizes stay in the file's asset axes."""
+    text = resources.files("holomj.data").joinpath(KNOWLEDGE_OBJECTS_FILE).read_text("utf-8")
+    kinds = []
+    for name, entry in json.loads(text).get("objects", {}).items():
+        raw = entry.get("size")
+        size = (float(raw[0]), float(raw[1]), float(raw[2])) if raw and len(raw) == 3 else None
+        placement = str(entry.get("placement", "floor"))
+        aliases = tuple(entry.get("aliases", []))
+        kinds.append(KnownKind(entry["category"], size, placement, name, aliases))
+    return tuple(kinds)

@@ -21,15 +21,8 @@ from typing import Any, Literal
 
 from holomj.atomic import write_file
 from holomj.errors import HolomjError, InputError
-from holomj.jobs.folder import (
-    GENERATE_JSON,
-    GENERATE_LOG,
-    PLAN_JSON,
-    REPORT_JSON,
-    dump_json,
-    prepare_output,
-    write_scene_folder,
-)
+from holomj.file_names import GENERATE_JSON, GENERATE_LOG, PLAN_JSON, REPORT_JSON
+from holomj.jobs.folder import dump_json, prepare_output, write_scene_folder
 from holomj.jobs.plan import PlanOptions, check_planner, make_plan
 from holomj.jobs.relation_report import structural_verdicts
 from holomj.jobs.stage_log import Listener, StageLog

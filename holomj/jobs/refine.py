@@ -122,8 +122,9 @@ class _Context:
 
     def measure(self, folder: Path) -> _Measure:
         from holomj.evaluation.fidelity import Scorer
+        from holomj.file_names import REPORT_JSON
         from holomj.jobs.eval import evaluate
-        from holomj.jobs.folder import REPORT_JSON, read_json_report
+        from holomj.jobs.folder import read_json_report
         from holomj.jobs.refine_findings import findings
         from holomj.refinement.goals import instruction_checks, refine_score
 

@@ -18,7 +18,8 @@ from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult, failed_result
 from holomj.batch.resume import MARKER, clean_partial, job_folder
 from holomj.errors import HolomjError
-from holomj.jobs.folder import REPORT_JSON, write_report
+from holomj.file_names import REPORT_JSON
+from holomj.jobs.folder import write_report
 from holomj.spec.report import StabilityReport
 
 JobFunction = Callable[[Job, Path, JobOptions], JobResult]

@@ -93,7 +93,7 @@ def populate_command(
     as_json: JsonOption = False,
 ) -> None:
     """Drop small objects onto a receptacle of an exported scene and write it back."""
-    from holomj.jobs.folder import POPULATE_REPORT
+    from holomj.file_names import POPULATE_REPORT
     from holomj.jobs.populate import parse_objects, populate_folder
 
     requests = guard(lambda: parse_objects(objects)) if objects is not None else None

@@ -25,8 +25,9 @@ from dm_control import composer, mjcf
 from dm_control.mjcf import constants
 
 from holomj.errors import FormatError
+from holomj.file_names import SCENE_XML
 from holomj.formats.objects_json import OBJECTS_JSON
-from holomj.jobs.folder import SCENE_XML, read_robot, read_scene
+from holomj.jobs.folder import read_robot, read_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.mjcf.loading import load_model_file
 from holomj.robots.occupancy import build_floor_grid

@@ -23,8 +23,9 @@ from pathlib import Path
 from typing import Any
 
 from holomj.errors import HolomjError
+from holomj.file_names import IMPORT_REPORT, REPORT_JSON
 from holomj.formats.summaries import model_summary, scene_summary
-from holomj.jobs.folder import IMPORT_REPORT, REPORT_JSON, prepare_output, write_scene_folder
+from holomj.jobs.folder import prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, Profile, check_profile, compile_scene
 from holomj.mjcf.objects import Furniture

@@ -26,10 +26,8 @@ from pathlib import Path
 from typing import Any
 
 from holomj.errors import InputError
+from holomj.file_names import RENDERS_DIR, REPORT_HTML, REPORT_JSON
 from holomj.jobs.folder import (
-    RENDERS_DIR,
-    REPORT_HTML,
-    REPORT_JSON,
     attach_folder_robot,
     open_library,
     prepare_output,

@@ -22,14 +22,8 @@ from holomj.evaluation.plan_spec import spec_from_plan
 from holomj.evaluation.report import EvalReport, evaluate_scene
 from holomj.evaluation.specs import check_spec, read_spec
 from holomj.evaluation.vocabulary import Vocabulary
-from holomj.jobs.folder import (
-    PLAN_JSON,
-    REPORT_JSON,
-    SCENE_XML,
-    read_json_report,
-    read_scene,
-    require_scene_folder,
-)
+from holomj.file_names import PLAN_JSON, REPORT_JSON, SCENE_XML
+from holomj.jobs.folder import read_json_report, read_scene, require_scene_folder
 
 if TYPE_CHECKING:
     from holomj.spec.plan import ScenePlan

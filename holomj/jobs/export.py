@@ -30,7 +30,8 @@ from typing import Any
 
 from holomj.atomic import replace_folder, write_file
 from holomj.errors import ExportError, InputError
-from holomj.jobs.folder import OBJECTS_JSON, SCENE_XML, read_json_report, read_scene
+from holomj.file_names import OBJECTS_JSON, SCENE_XML
+from holomj.jobs.folder import read_json_report, read_scene
 from holomj.jobs.folder import require_scene_folder as _require_scene_folder
 
 FORMATS = ("glb", "usd", "urdf")

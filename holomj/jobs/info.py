@@ -6,8 +6,8 @@ from pathlib import Path
 from typing import Any
 
 from holomj.errors import FormatError
+from holomj.file_names import SCENE_JSON, SCENE_XML
 from holomj.formats.summaries import model_summary, scene_summary
-from holomj.jobs.folder import SCENE_JSON, SCENE_XML
 from holomj.mjcf.loading import load_model_file
 from holomj.spec.base import read_json, validate_model
 from holomj.spec.scene import SceneSpec

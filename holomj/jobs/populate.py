@@ -27,11 +27,8 @@ from pathlib import Path
 from typing import Any, Literal
 
 from holomj.errors import HolomjError, InputError
+from holomj.file_names import POPULATE_REPORT, RENDERS_DIR, REPORT_HTML, REPORT_JSON
 from holomj.jobs.folder import (
-    POPULATE_REPORT,
-    RENDERS_DIR,
-    REPORT_HTML,
-    REPORT_JSON,
     attach_folder_robot,
     open_library,
     read_json_report,

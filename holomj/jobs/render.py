@@ -30,7 +30,7 @@ import mujoco
 
 from holomj.atomic import replace_folder, write_file
 from holomj.errors import ExportError, FormatError, HolomjError, InputError
-from holomj.jobs.folder import (
+from holomj.file_names import (
     ASSETS_DIR,
     IMPORT_REPORT,
     PLAN_JSON,
@@ -39,10 +39,8 @@ from holomj.jobs.folder import (
     REPORT_JSON,
     SCENE_JSON,
     SCENE_XML,
-    open_library,
-    read_json_report,
-    read_scene,
 )
+from holomj.jobs.folder import open_library, read_json_report, read_scene
 from holomj.mjcf.compiler import CompiledScene
 from holomj.rendering import gl
 from holomj.rendering.pipeline import (

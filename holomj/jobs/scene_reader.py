@@ -14,10 +14,8 @@ from pathlib import Path
 from typing import Any
 
 from holomj.errors import InputError, closest_names
+from holomj.file_names import PLAN_JSON, REPORT_JSON, SCENE_XML
 from holomj.jobs.folder import (
-    PLAN_JSON,
-    REPORT_JSON,
-    SCENE_XML,
     open_library,
     read_json_report,
     read_robot,

@@ -246,7 +246,7 @@ def _check_rooms(rooms: list[Room]) -> None:
         try:
             polygons.append(room_polygon(room.polygon))
         except SpecError as err:
-            raise err.located(f"rooms[{index}].polygon") from None
+            raise err.located(f"rooms[{index}].polygon ({room.id})") from None
     for i in range(len(polygons)):
         for j in range(i + 1, len(polygons)):
             if not polygons[i].intersects(polygons[j]):

@@ -11,12 +11,14 @@ from holomj.spec.scene import SceneSpec
 
 
 def model_summary(model: mujoco.MjModel) -> dict[str, Any]:
-    """Counts and mass of a compiled model."""
+    """Counts and mass of a compiled model; its lights are the scene's own or, for a scene that
+    lists none, the sun and ceiling lights the compiler adds."""
     return {
         "bodies": int(model.nbody),
         "geoms": int(model.ngeom),
         "joints": int(model.njnt),
         "meshes": int(model.nmesh),
+        "lights": int(model.nlight),
         "free_joints": int(sum(1 for t in model.jnt_type if t == mujoco.mjtJoint.mjJNT_FREE)),
         "hinges": int(sum(1 for t in model.jnt_type if t == mujoco.mjtJoint.mjJNT_HINGE)),
         "total_mass_kg": round(float(model.body_mass.sum()), 3),

@@ -14,7 +14,10 @@ from holomj.spec.scene import SceneSpec
 
 
 def folder_summary(out: Path) -> dict[str, Any]:
-    """Summary of an exported folder: its scene.json and the model loaded from its scene.xml."""
+    """Summary of an exported folder: its scene.json and the model loaded from its scene.xml.
+
+    ``lights`` counts the lights of the compiled model, which has a sun and ceiling lights where
+    scene.json lists none."""
     out = Path(out)
     if not out.is_dir():
         raise FormatError(
@@ -23,4 +26,5 @@ def folder_summary(out: Path) -> dict[str, Any]:
     scene_path = out / SCENE_JSON
     scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
     model = load_model_file(out / SCENE_XML)
-    return {"folder": str(out), **scene_summary(scene), "model": model_summary(model)}
+    summary = model_summary(model)
+    return {"folder": str(out), **scene_summary(scene), "lights": summary["lights"], "model": summary}

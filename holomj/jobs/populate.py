@@ -24,7 +24,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from holomj.errors import HolomjError, InputError
 from holomj.file_names import POPULATE_REPORT, RENDERS_DIR, REPORT_HTML, REPORT_JSON
@@ -45,6 +45,10 @@ from holomj.physics.spawn import find_object, merge_libraries, populate
 from holomj.seeds import MAX_SEED, seed_rng, stage_rng
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
+
+if TYPE_CHECKING:
+    from holomj.jobs.pointing import PointingOutcome
+    from holomj.refinement.llm import VisionChat
 
 MAX_ATTEMPTS = 1000
 MAX_DRAWN = 20  # objects drawn for a receptacle when none are named
@@ -120,26 +124,12 @@ def populate_folder(
     ``instruction``, or an unknown planner.
     """
     folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
-    if isinstance(requests, str):
-        requests = parse_objects(requests)
-    if instruction is not None:
-        instruction = " ".join(instruction.split())
-        if not instruction:
-            raise InputError("empty instruction", where="--instruction")
-        if requests is not None:
-            raise InputError("give --objects or --instruction, not both", where="--instruction")
-    if planner not in ("offline", "llm"):
-        raise InputError(f"unknown planner {planner!r}", where="--planner", fix="offline or llm")
-    if not 0 <= seed <= MAX_SEED:
-        raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
-    if max_attempts < 1 or max_attempts > MAX_ATTEMPTS:
-        raise InputError(f"must lie in [1, {MAX_ATTEMPTS}]", where="--max-attempts")
+    requests, instruction = _checked_arguments(requests, instruction, planner, seed, max_attempts)
     scene = read_scene(folder)
     libraries = [open_library(folder)]
     if library_path is not None:
         libraries.append(AssetLibrary.open(library_path))
     library = merge_libraries(*libraries)
-    drawn_from = None
     notes: list[str] = []
 
     def with_robot(compiled: CompiledScene) -> CompiledScene:
@@ -150,20 +140,8 @@ def populate_folder(
         chat, why = _chat(llm_config, images, seed, log)
         if chat is None:
             notes.append(f"no LLM to point with ({why}): the offline planner decided")
-    if requests is None and chat is None:
-        if not 1 <= count <= MAX_DRAWN:
-            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
-        category = library.get(find_object(scene, receptacle_id).asset).meta.category
-        if instruction is not None:
-            requests = _instruction_requests(instruction, library, count)
-            drawn_from = "instruction" if requests else None
-        if not requests:
-            requests, drawn_from = prior_requests(
-                category, library, stage_rng(seed, "populate", "priors"), count
-            )
     if chat is not None:
-        if not 1 <= count <= MAX_DRAWN:
-            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
+        _check_count(count)
         from holomj.jobs.pointing import populate_by_pointing
 
         find_object(scene, receptacle_id)
@@ -183,36 +161,13 @@ def populate_folder(
         )
         result_scene = pointed.scene
         library = merge_libraries(*libraries)  # with the assets made on demand
-        placements = [
-            {
-                "object_id": r.get("object_id"),
-                "asset": r.get("asset"),
-                "accepted": r.get("status") == "placed",
-                "reason": r.get("reason", r.get("status")),
-                "attempts": r.get("attempts", 0),
-            }
-            for r in pointed.records
-            if r.get("status") != "done"
-        ]
-        run: dict[str, Any] = {
-            "receptacle": receptacle_id,
-            "requests": [{"name": r["name"], "count": 1} for r in pointed.records if r.get("name")],
-            "drawn_from": "llm pointing",
-            "seed": seed,
-            "max_attempts": max_attempts,
-            "requested": len(placements),
-            "placed": pointed.placed,
-            "placements": placements,
-            "pointing": pointed.records,
-            "llm": {
-                "model": chat.config.model,
-                "images": chat.images,
-                "text_only_reason": chat.text_only_reason,
-                **pointed.usage,
-            },
-        }
+        run = _pointing_run(pointed, chat, receptacle_id, seed, max_attempts)
     else:
-        assert requests is not None  # drawn above
+        drawn_from = None
+        if requests is None:
+            requests, drawn_from = _drawn_requests(
+                scene, library, receptacle_id, instruction, count, seed
+            )
         result = populate(
             scene,
             library,
@@ -236,10 +191,113 @@ def populate_folder(
         run["planner"] = "llm" if chat is not None else "offline"
     if notes:
         run["notes"] = notes
-    compiled = with_robot(compile_scene(result_scene, library))
+    report = _write_populated(folder, result_scene, library, run, with_robot)
+    return PopulateResult(
+        folder=str(folder),
+        receptacle=receptacle_id,
+        requested=run["requested"],
+        placed=run["placed"],
+        report=report,
+    )
+
+
+def _checked_arguments(
+    requests: list[tuple[str, int]] | str | None,
+    instruction: str | None,
+    planner: str,
+    seed: int,
+    max_attempts: int,
+) -> tuple[list[tuple[str, int]] | None, str | None]:
+    """The requests (parsed from their text form) and the instruction (whitespace collapsed),
+    after checking the arguments that do not need the scene."""
+    if isinstance(requests, str):
+        requests = parse_objects(requests)
+    if instruction is not None:
+        instruction = " ".join(instruction.split())
+        if not instruction:
+            raise InputError("empty instruction", where="--instruction")
+        if requests is not None:
+            raise InputError("give --objects or --instruction, not both", where="--instruction")
+    if planner not in ("offline", "llm"):
+        raise InputError(f"unknown planner {planner!r}", where="--planner", fix="offline or llm")
+    if not 0 <= seed <= MAX_SEED:
+        raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
+    if max_attempts < 1 or max_attempts > MAX_ATTEMPTS:
+        raise InputError(f"must lie in [1, {MAX_ATTEMPTS}]", where="--max-attempts")
+    return requests, instruction
+
+
+def _check_count(count: int) -> None:
+    if not 1 <= count <= MAX_DRAWN:
+        raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
+
+
+def _drawn_requests(
+    scene: SceneSpec,
+    library: AssetLibrary,
+    receptacle_id: str,
+    instruction: str | None,
+    count: int,
+    seed: int,
+) -> tuple[list[tuple[str, int]], str | None]:
+    """Requests when none were given: the instruction's small objects the library holds, else
+    ``count`` drawn from the receptacle priors; with where they were drawn from."""
+    _check_count(count)
+    category = library.get(find_object(scene, receptacle_id).asset).meta.category
+    if instruction is not None:
+        requests = _instruction_requests(instruction, library, count)
+        if requests:
+            return requests, "instruction"
+    return prior_requests(category, library, stage_rng(seed, "populate", "priors"), count)
+
+
+def _pointing_run(
+    pointed: PointingOutcome, chat: VisionChat, receptacle_id: str, seed: int, max_attempts: int
+) -> dict[str, Any]:
+    """The report of a run in which the model pointed at where each object goes."""
+    placements = [
+        {
+            "object_id": r.get("object_id"),
+            "asset": r.get("asset"),
+            "accepted": r.get("status") == "placed",
+            "reason": r.get("reason", r.get("status")),
+            "attempts": r.get("attempts", 0),
+        }
+        for r in pointed.records
+        if r.get("status") != "done"
+    ]
+    return {
+        "receptacle": receptacle_id,
+        "requests": [{"name": r["name"], "count": 1} for r in pointed.records if r.get("name")],
+        "drawn_from": "llm pointing",
+        "seed": seed,
+        "max_attempts": max_attempts,
+        "requested": len(placements),
+        "placed": pointed.placed,
+        "placements": placements,
+        "pointing": pointed.records,
+        "llm": {
+            "model": chat.config.model,
+            "images": chat.images,
+            "text_only_reason": chat.text_only_reason,
+            **pointed.usage,
+        },
+    }
+
+
+def _write_populated(
+    folder: Path,
+    scene: SceneSpec,
+    library: AssetLibrary,
+    run: dict[str, Any],
+    with_robot: Callable[[CompiledScene], CompiledScene],
+) -> dict[str, Any]:
+    """Compile the populated scene and write it back into ``folder`` with its validation (when
+    the folder had one) and the populate report; returns the report."""
+    compiled = with_robot(compile_scene(scene, library))
     written: dict[str, Any] = {}
     if (folder / REPORT_JSON).exists():
-        validation = _validate(result_scene, library, folder)
+        validation = _validate(scene, library, folder)
         written[REPORT_JSON] = validation.model_dump(mode="json")
         run["validation"] = {
             "ok": validation.ok,
@@ -252,18 +310,12 @@ def populate_folder(
     report = {**run, "runs": [*previous, run], "stale_files": stale}
     written[POPULATE_REPORT] = report
     write_scene_folder(compiled, folder, overwrite=True, extra_json=written, keep_from=folder)
-    return PopulateResult(
-        folder=str(folder),
-        receptacle=receptacle_id,
-        requested=run["requested"],
-        placed=run["placed"],
-        report=report,
-    )
+    return report
 
 
 def _chat(
     config: Any, images: bool | None, seed: int, log: Callable[[str], None] | None
-) -> tuple[Any, str]:
+) -> tuple[VisionChat | None, str]:
     """The model to point with, or (None, why not) when none is configured."""
     from holomj.jobs.refine import resolve_llm_config
     from holomj.refinement.llm import VisionChat, images_enabled

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
-from holomj.jobs.scene_reader import Scene as _SceneReader
+from holomj.jobs.scene_reader import SceneFolderReader
 from holomj.library.store import AssetLibrary as _StoreLibrary
 
 if TYPE_CHECKING:
@@ -283,7 +283,7 @@ def export(
     )
 
 
-class Scene(_SceneReader):
+class Scene(SceneFolderReader):
     """A holomj scene folder, loaded (re-exported as ``holomj.Scene``): ``Scene.load(folder)``
     or ``Scene.open(folder)``; ``.objects``, ``.rooms``, ``.report``, ``.model()``, and
     ``.edit(ops)``."""

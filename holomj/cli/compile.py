@@ -10,7 +10,7 @@ OUT is untouched), 1 for a failure of ours, and when objects could not be made t
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -125,7 +125,7 @@ def compile_command(
             out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
 
 
-def _print_stand(stand: dict) -> None:
+def _print_stand(stand: dict[str, Any]) -> None:
     """What making the scene stand changed, and the verdict."""
     before, after = stand["penetrations_before"], stand["penetrations_after"]
     out_console.print(
@@ -134,8 +134,8 @@ def _print_stand(stand: dict) -> None:
         f"{before['count']} (max {before['max_m'] * 1000:.0f} mm) -> {after['count']} "
         f"(max {after['max_m'] * 1000:.1f} mm)"
     )
-    validation = stand.get("validation")
-    if stand["valid"]:
+    if stand["valid"]:  # then it was validated
+        validation = stand["validation"]
         out_console.print(
             f"  [green]valid:[/] {validation['stable']}/{validation['objects']} objects stable"
         )

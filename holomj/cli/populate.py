@@ -114,7 +114,7 @@ def populate_command(
             max_attempts=max_attempts,
             count=count,
             instruction=instruction,
-            planner=planner,  # type: ignore[arg-type]
+            planner=planner,
             llm_config=settings,
             images=None if images else False,
             log=None if as_json else lambda line: err_console.print(line, markup=False),

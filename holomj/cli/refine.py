@@ -100,7 +100,7 @@ def refine_command(
             scene,
             instruction,
             rounds=rounds,
-            planner=planner,  # type: ignore[arg-type]
+            planner=planner,  # type: ignore[arg-type]  # refine checks the name and says so
             out=out,
             overwrite=overwrite,
             seed=seed,

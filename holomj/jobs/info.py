@@ -27,4 +27,9 @@ def folder_summary(out: Path) -> dict[str, Any]:
     scene = validate_model(SceneSpec, read_json(scene_path), str(scene_path))
     model = load_model_file(out / SCENE_XML)
     summary = model_summary(model)
-    return {"folder": str(out), **scene_summary(scene), "lights": summary["lights"], "model": summary}
+    return {
+        "folder": str(out),
+        **scene_summary(scene),
+        "lights": summary["lights"],
+        "model": summary,
+    }

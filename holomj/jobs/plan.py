@@ -9,11 +9,13 @@ from typing import TYPE_CHECKING, Literal
 
 from holomj.errors import InputError
 from holomj.jobs.stage_log import Listener, StageLog
+from holomj.spec.choices import one_of
 
 if TYPE_CHECKING:
     from holomj.spec.plan import ScenePlan
 
-PLANNERS = ("offline", "llm")
+PlannerName = Literal["offline", "llm"]
+PLANNERS: tuple[PlannerName, ...] = ("offline", "llm")
 
 
 @dataclass(frozen=True)
@@ -29,13 +31,14 @@ class PlanOptions:
     llm_config: Path | None = None
 
 
-def check_planner(planner: str) -> Literal["offline", "llm"]:
+def check_planner(planner: str) -> PlannerName:
     """``planner`` when it is a planner's name, else an InputError naming ``--planner``."""
-    if planner not in PLANNERS:
+    chosen = one_of(planner, PLANNERS)
+    if chosen is None:
         raise InputError(
             f"unknown planner {planner!r}", where="--planner", fix="use offline or llm"
         )
-    return planner  # type: ignore[return-value]
+    return chosen
 
 
 def plan_scene(

@@ -24,7 +24,7 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Literal
+from typing import TYPE_CHECKING, Any
 
 from holomj.errors import HolomjError, InputError
 from holomj.file_names import POPULATE_REPORT, RENDERS_DIR, REPORT_HTML, REPORT_JSON
@@ -36,6 +36,7 @@ from holomj.jobs.folder import (
     require_scene_folder,
     write_scene_folder,
 )
+from holomj.jobs.plan import check_planner
 from holomj.jobs.receptacle_priors import DEFAULT_COUNT, prior_requests
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, compile_scene
@@ -106,7 +107,7 @@ def populate_folder(
     max_attempts: int = 20,
     count: int = DEFAULT_COUNT,
     instruction: str | None = None,
-    planner: Literal["offline", "llm"] = "offline",
+    planner: str = "offline",
     llm_config: Any = None,
     images: bool | None = None,
     log: Callable[[str], None] | None = None,
@@ -218,8 +219,7 @@ def _checked_arguments(
             raise InputError("empty instruction", where="--instruction")
         if requests is not None:
             raise InputError("give --objects or --instruction, not both", where="--instruction")
-    if planner not in ("offline", "llm"):
-        raise InputError(f"unknown planner {planner!r}", where="--planner", fix="offline or llm")
+    check_planner(planner)
     if not 0 <= seed <= MAX_SEED:
         raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
     if max_attempts < 1 or max_attempts > MAX_ATTEMPTS:

@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from holomj.errors import InputError, closest_names
 from holomj.file_names import PLAN_JSON, REPORT_JSON, SCENE_XML
@@ -68,11 +68,16 @@ def object_pose(obj: SceneObject) -> Pose:
     else:
         half = math.radians(obj.yaw_deg) / 2
         quat, yaw = (math.cos(half), 0.0, 0.0, math.sin(half)), obj.yaw_deg
-    return Pose(tuple(obj.position), quat, round(yaw, 6))  # type: ignore[arg-type]
+    px, py, pz = obj.position
+    return Pose((px, py, pz), quat, round(yaw, 6))
 
 
-class Scene:
-    """A holomj scene folder, loaded: ``Scene.load("out/house")``.
+_Reader = TypeVar("_Reader", bound="SceneFolderReader")
+
+
+class SceneFolderReader:
+    """A holomj scene folder, loaded: ``SceneFolderReader.load("out/house")`` (the public
+    :class:`holomj.Scene` adds editing to it).
 
     Raises :class:`~holomj.errors.InputError` for a folder that is not a holomj scene and
     :class:`~holomj.errors.FormatError` for one whose files cannot be read.
@@ -84,7 +89,7 @@ class Scene:
         self.library = library
 
     @classmethod
-    def load(cls, folder: Path | str) -> Scene:
+    def load(cls: type[_Reader], folder: Path | str) -> _Reader:
         """Load the scene folder ``folder`` (written by generate, compile, populate, ...)."""
         folder = require_scene_folder(Path(folder), "holomj generate' or 'holomj compile")
         return cls(folder, read_scene(folder), open_library(folder))
@@ -174,5 +179,5 @@ class Scene:
             pose=object_pose(obj),
             static=obj.static,
             support=obj.support,
-            size=tuple(round(v, 6) for v in size),  # type: ignore[arg-type]
+            size=(round(size[0], 6), round(size[1], 6), round(size[2], 6)),
         )

@@ -265,9 +265,9 @@ def bake(
 def _pose_fields(pos: np.ndarray, quat: np.ndarray) -> dict:
     """``position`` and ``yaw_deg`` (or ``quat`` when tilted) of a settled body."""
     quat = np.asarray(quat, dtype=float) / np.linalg.norm(quat)
-    rot = np.zeros(9)
-    mujoco.mju_quat2Mat(rot, quat)
-    rot = rot.reshape(3, 3)
+    flat = np.zeros(9)
+    mujoco.mju_quat2Mat(flat, quat)
+    rot = flat.reshape(3, 3)
     tilt = math.degrees(math.acos(min(1.0, max(-1.0, rot[2, 2]))))
     yaw = math.degrees(math.atan2(rot[1, 0], rot[0, 0]))
     fields: dict = {"position": _clean_vec(pos), "yaw_deg": round(yaw, 4)}

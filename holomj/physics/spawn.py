@@ -325,7 +325,7 @@ def _make_jobs(
     before = first or []
     taken = {o.id for o in scene.objects} | {j.object_id for j in before}
     counters: Counter[str] = Counter()
-    jobs = []
+    jobs: list[_Job] = []
     for name, count in requests:
         if count < 0 or count > 1000:
             raise InputError(f"count {count} for {name!r} must lie in [0, 1000]", where="objects")

@@ -26,7 +26,7 @@ the :class:`EditReport`. Nothing in an operations file is ever executed.
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal, get_args
+from typing import Annotated, Any, Final, Literal, get_args
 
 from pydantic import BaseModel, Field, RootModel, model_validator
 
@@ -41,7 +41,7 @@ from holomj.spec.base import (
     validate_model,
 )
 
-EDIT_SCHEMA_VERSION = "1.0"
+EDIT_SCHEMA_VERSION: Final = "1.0"
 MAX_OPERATIONS = 50  # per file (and per refine round)
 MAX_RELATIONS = 8
 MAX_ADD_ON = 10

@@ -12,13 +12,13 @@ object's front faces +X in the asset frame), height up.
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Final, Literal
 
 from pydantic import Field, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
 
-PLAN_SCHEMA_VERSION = "1.0"
+PLAN_SCHEMA_VERSION: Final = "1.0"
 
 # Names of plan objects: Holodeck-like ("dining chair"), no '|' or ',' (they separate fields of
 # the constraint text form) and no trailing "-<n>" (that is an instance suffix).

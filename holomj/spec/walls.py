@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol
 
 from shapely.geometry import Polygon
 from shapely.geometry.polygon import orient
@@ -163,14 +164,24 @@ class _Line:
     edges: list[_Edge]
 
 
-def derive_walls(rooms: Sequence[object]) -> list[Wall]:
+class RoomOutline(Protocol):
+    """What walls are derived from: a room's id and its floor polygon."""
+
+    @property
+    def id(self) -> str: ...
+
+    @property
+    def polygon(self) -> Sequence[Sequence[float]]: ...
+
+
+def derive_walls(rooms: Sequence[RoomOutline]) -> list[Wall]:
     """Walls of a set of rooms (objects with ``id`` and ``polygon``), in a deterministic order."""
     lines: list[_Line] = []
     for room in rooms:
-        polygon = room_polygon(room.polygon)  # type: ignore[attr-defined]
+        polygon = room_polygon(room.polygon)
         coords = list(polygon.exterior.coords)[:-1]
         for a, b in zip(coords, coords[1:] + coords[:1]):
-            _add_edge(lines, room.id, a, b)  # type: ignore[attr-defined]
+            _add_edge(lines, room.id, a, b)
     walls: list[tuple[tuple[str, ...], Point, Point, str | None]] = []
     for line in lines:
         walls.extend(_split_line(line))

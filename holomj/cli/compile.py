@@ -103,9 +103,9 @@ def compile_command(
             f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
         )
         out_console.print(
-            f"  {len(scene['rooms'])} rooms, {scene['walls']} walls, {scene['doors']} doors, "
-            f"{scene['windows']} windows, {scene['objects']} objects; "
-            f"{model['bodies']} bodies, {model['geoms']} geoms, {model['total_mass_kg']} kg"
+            f"  {len(scene.rooms)} rooms, {scene.walls} walls, {scene.doors} doors, "
+            f"{scene.windows} windows, {scene.objects} objects; "
+            f"{model.bodies} bodies, {model.geoms} geoms, {model.total_mass_kg} kg"
         )
         if report.robot is not None:
             x, y, _ = report.robot["position"]

@@ -24,7 +24,7 @@ from typing import Any
 
 from holomj.errors import HolomjError
 from holomj.file_names import IMPORT_REPORT, REPORT_JSON
-from holomj.formats.summaries import model_summary, scene_summary
+from holomj.formats.summaries import ModelSummary, SceneSummary, model_summary, scene_summary
 from holomj.jobs.folder import prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, Profile, check_profile, compile_scene
@@ -49,8 +49,8 @@ class CompileReport:
     input: str
     output: str
     format: str
-    scene: dict[str, Any]
-    model: dict[str, Any]
+    scene: SceneSummary
+    model: ModelSummary
     substitutions: list[dict[str, Any]]
     warnings: list[str]
     sim_warnings: dict[str, int]
@@ -66,7 +66,7 @@ class CompileReport:
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-able form."""
-        return dict(self.__dict__)
+        return {**self.__dict__, "scene": self.scene.to_dict(), "model": self.model.to_dict()}
 
 
 def compile_file(

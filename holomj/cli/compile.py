@@ -10,7 +10,7 @@ OUT is untouched), 1 for a failure of ours, and when objects could not be made t
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
@@ -27,51 +27,61 @@ from holomj.cli.options import (
 from holomj.cli.output import emit_json, guard, library_root, out_console, spinner
 from holomj.importers.detect import FORMATS
 
+if TYPE_CHECKING:
+    from holomj.jobs.compile import CompileReport
+
+
+InputArg = Annotated[
+    Path,
+    typer.Argument(
+        metavar="INPUT",
+        help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.",
+    ),
+]
+FormatOption = Annotated[
+    str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
+]
+CheckSecondsOption = Annotated[
+    float,
+    typer.Option(
+        "--check-seconds",
+        min=0.0,
+        max=60.0,
+        help="Seconds to simulate as a smoke test (0 skips).",
+    ),
+]
+FixOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--fix/--no-fix",
+        help="Make the scene stand: objects on the floor or dropped onto their receptacles, "
+        "clear of walls and each other, settled and validated (default: on for "
+        "ProcTHOR/Holodeck houses and SceneDefs, off for holomj scenes).",
+        show_default=False,
+    ),
+]
+AllowInvalidOption = Annotated[
+    bool,
+    typer.Option(
+        "--allow-invalid",
+        help="Write the scene even when objects could not be made to stand (marked "
+        '"valid": false in import_report.json).',
+    ),
+]
+
 
 def compile_command(
-    input_path: Annotated[
-        Path,
-        typer.Argument(
-            metavar="INPUT",
-            help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.",
-        ),
-    ],
+    input_path: InputArg,
     out: OutFolderOption,
-    fmt: Annotated[
-        str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
-    ] = None,
+    fmt: FormatOption = None,
     library: LibraryOption = None,
     overwrite: OverwriteOption = False,
-    check_seconds: Annotated[
-        float,
-        typer.Option(
-            "--check-seconds",
-            min=0.0,
-            max=60.0,
-            help="Seconds to simulate as a smoke test (0 skips).",
-        ),
-    ] = 1.0,
+    check_seconds: CheckSecondsOption = 1.0,
     robot: RobotOption = None,
     profile: ProfileOption = "default",
     seed: SeedOption = 0,
-    fix: Annotated[
-        bool | None,
-        typer.Option(
-            "--fix/--no-fix",
-            help="Make the scene stand: objects on the floor or dropped onto their receptacles, "
-            "clear of walls and each other, settled and validated (default: on for "
-            "ProcTHOR/Holodeck houses and SceneDefs, off for holomj scenes).",
-            show_default=False,
-        ),
-    ] = None,
-    allow_invalid: Annotated[
-        bool,
-        typer.Option(
-            "--allow-invalid",
-            help="Write the scene even when objects could not be made to stand (marked "
-            '"valid": false in import_report.json).',
-        ),
-    ] = False,
+    fix: FixOption = None,
+    allow_invalid: AllowInvalidOption = False,
     as_json: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
@@ -98,31 +108,36 @@ def compile_command(
     if as_json:
         emit_json(report.to_dict())
     elif not quiet:
-        scene, model = report.scene, report.model
+        _print_report(report)
+
+
+def _print_report(report: CompileReport) -> None:
+    """What was compiled: counts, the robot, making it stand, substitutions and warnings."""
+    scene, model = report.scene, report.model
+    out_console.print(
+        f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
+    )
+    out_console.print(
+        f"  {len(scene.rooms)} rooms, {scene.walls} walls, {scene.doors} doors, "
+        f"{scene.windows} windows, {scene.objects} objects; "
+        f"{model.bodies} bodies, {model.geoms} geoms, {model.total_mass_kg} kg"
+    )
+    if report.robot is not None:
+        x, y, _ = report.robot["position"]
         out_console.print(
-            f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
+            f"  robot {report.robot['name']} at ({x:.2f}, {y:.2f}), yaw "
+            f"{report.robot['yaw_deg']:.1f}°, in {report.robot['room']}"
         )
+    if report.stand is not None:
+        _print_stand(report.stand)
+    if report.substitutions:
         out_console.print(
-            f"  {len(scene.rooms)} rooms, {scene.walls} walls, {scene.doors} doors, "
-            f"{scene.windows} windows, {scene.objects} objects; "
-            f"{model.bodies} bodies, {model.geoms} geoms, {model.total_mass_kg} kg"
+            f"  {len(report.substitutions)} assets substituted (see import_report.json)"
         )
-        if report.robot is not None:
-            x, y, _ = report.robot["position"]
-            out_console.print(
-                f"  robot {report.robot['name']} at ({x:.2f}, {y:.2f}), yaw "
-                f"{report.robot['yaw_deg']:.1f}°, in {report.robot['room']}"
-            )
-        if report.stand is not None:
-            _print_stand(report.stand)
-        if report.substitutions:
-            out_console.print(
-                f"  {len(report.substitutions)} assets substituted (see import_report.json)"
-            )
-        for warning in report.warnings:
-            out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
-        if report.sim_warnings:
-            out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
+    for warning in report.warnings:
+        out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
+    if report.sim_warnings:
+        out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
 
 
 def _print_stand(stand: dict[str, Any]) -> None:

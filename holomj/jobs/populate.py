@@ -142,51 +142,16 @@ def populate_folder(
         if chat is None:
             notes.append(f"no LLM to point with ({why}): the offline planner decided")
     if chat is not None:
-        _check_count(count)
-        from holomj.jobs.pointing import populate_by_pointing
-
-        find_object(scene, receptacle_id)
-        pointed = populate_by_pointing(
-            folder,
-            scene,
-            receptacle_id,
-            instruction or "",
-            count=count,
-            chat=chat,
-            own=libraries[0],
-            source=libraries[1] if len(libraries) > 1 else None,
-            seed=seed,
-            max_attempts=max_attempts,
-            attach=with_robot,
-            log=log,
-        )
-        result_scene = pointed.scene
+        result_scene, run = _run_pointing(
+            folder, scene, receptacle_id, instruction or "", count, chat, libraries,
+            seed, max_attempts, with_robot, log,
+        )  # fmt: skip
         library = merge_libraries(*libraries)  # with the assets made on demand
-        run = _pointing_run(pointed, chat, receptacle_id, seed, max_attempts)
     else:
-        drawn_from = None
-        if requests is None:
-            requests, drawn_from = _drawn_requests(
-                scene, library, receptacle_id, instruction, count, seed
-            )
-        result = populate(
-            scene,
-            library,
-            receptacle_id,
-            requests,
-            seed_rng(seed),
-            max_attempts=max_attempts,
-            attach=with_robot,
-        )
-        result_scene = result.scene
-        run = {
-            "receptacle": receptacle_id,
-            "requests": [{"name": n, "count": c} for n, c in requests],
-            "drawn_from": drawn_from,
-            "seed": seed,
-            "max_attempts": max_attempts,
-            **result.to_dict(),
-        }
+        result_scene, run = _run_drops(
+            scene, library, receptacle_id, requests, instruction, count, seed, max_attempts,
+            with_robot,
+        )  # fmt: skip
     if instruction is not None:
         run["instruction"] = instruction
         run["planner"] = "llm" if chat is not None else "offline"
@@ -200,6 +165,80 @@ def populate_folder(
         placed=run["placed"],
         report=report,
     )
+
+
+def _run_pointing(
+    folder: Path,
+    scene: SceneSpec,
+    receptacle_id: str,
+    instruction: str,
+    count: int,
+    chat: VisionChat,
+    libraries: list[AssetLibrary],
+    seed: int,
+    max_attempts: int,
+    with_robot: Callable[[CompiledScene], CompiledScene],
+    log: Callable[[str], None] | None,
+) -> tuple[SceneSpec, dict[str, Any]]:
+    """The model names each object and points at where it goes; the populated scene and the
+    run's report. Assets made on demand are added to ``libraries[0]`` (the folder's)."""
+    _check_count(count)
+    from holomj.jobs.pointing import populate_by_pointing
+
+    find_object(scene, receptacle_id)
+    pointed = populate_by_pointing(
+        folder,
+        scene,
+        receptacle_id,
+        instruction,
+        count=count,
+        chat=chat,
+        own=libraries[0],
+        source=libraries[1] if len(libraries) > 1 else None,
+        seed=seed,
+        max_attempts=max_attempts,
+        attach=with_robot,
+        log=log,
+    )
+    return pointed.scene, _pointing_run(pointed, chat, receptacle_id, seed, max_attempts)
+
+
+def _run_drops(
+    scene: SceneSpec,
+    library: AssetLibrary,
+    receptacle_id: str,
+    requests: list[tuple[str, int]] | None,
+    instruction: str | None,
+    count: int,
+    seed: int,
+    max_attempts: int,
+    with_robot: Callable[[CompiledScene], CompiledScene],
+) -> tuple[SceneSpec, dict[str, Any]]:
+    """Spawn-and-drop the requests (drawn when None); the populated scene and the run's
+    report."""
+    drawn_from = None
+    if requests is None:
+        requests, drawn_from = _drawn_requests(
+            scene, library, receptacle_id, instruction, count, seed
+        )
+    result = populate(
+        scene,
+        library,
+        receptacle_id,
+        requests,
+        seed_rng(seed),
+        max_attempts=max_attempts,
+        attach=with_robot,
+    )
+    run = {
+        "receptacle": receptacle_id,
+        "requests": [{"name": n, "count": c} for n, c in requests],
+        "drawn_from": drawn_from,
+        "seed": seed,
+        "max_attempts": max_attempts,
+        **result.to_dict(),
+    }
+    return result.scene, run
 
 
 def _checked_arguments(

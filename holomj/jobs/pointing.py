@@ -68,7 +68,7 @@ def populate_by_pointing(
 ) -> PointingOutcome:
     """Name, point and drop up to ``count`` objects (see the module docstring)."""
     from holomj.edit.state import EditContext
-    from holomj.physics.spawn import find_object
+    from holomj.physics.spawn_requests import find_object
     from holomj.physics.surfaces_world import world_surfaces
 
     synthesiser = None
@@ -147,7 +147,7 @@ class _Pointer:
     def _look(self, outcome: PointingOutcome) -> _View:
         """The receptacle seen from above in the scene as it is now, with its surfaces."""
         from holomj.mjcf.compiler import compile_scene
-        from holomj.physics.spawn import find_object
+        from holomj.physics.spawn_requests import find_object
         from holomj.physics.surfaces_world import world_surfaces
 
         library = self.ctx.library

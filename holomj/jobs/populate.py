@@ -42,7 +42,8 @@ from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.physics.scene_io import loaded_from_compiled
 from holomj.physics.settle import validate_loaded
-from holomj.physics.spawn import find_object, merge_libraries, populate
+from holomj.physics.spawn import populate
+from holomj.physics.spawn_requests import find_object, merge_libraries
 from holomj.seeds import MAX_SEED, seed_rng, stage_rng
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec

@@ -60,6 +60,7 @@ from holomj.formats.usd_prims import (
     valid_name,
     visual_mesh,
 )
+from holomj.formats.welded_bodies import welded
 from holomj.mjcf import names
 from holomj.spec.scene import SceneSpec
 from holomj.version import __version__
@@ -249,7 +250,7 @@ class _StageBuilder:
         if nested:
             xform.SetResetXformStack(True)  # a rigid body inside another body: world pose
         set_pose(xform, pos, rot)
-        members = self._welded(body)
+        members = welded(self.geo, body)
         dynamic = self._has_joint(body)
         if dynamic:
             UsdPhysics.RigidBodyAPI.Apply(prim)
@@ -266,14 +267,6 @@ class _StageBuilder:
                 if self._has_joint(child):
                     self._body(child, path, self.geo.body_name(child), rigid, nested=True)
         return path
-
-    def _welded(self, body: int) -> list[int]:
-        """``body`` and the descendants welded to it (no joint in between)."""
-        out = [body]
-        for child in self.geo.children[body]:
-            if not self._has_joint(child):
-                out += self._welded(child)
-        return out
 
     def _joints(
         self, body: int, path: str, rigid_parent: tuple[str, int] | None, owner: str

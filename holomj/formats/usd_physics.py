@@ -14,6 +14,7 @@ import numpy as np
 
 from holomj.formats.model_geometry import ModelGeometry, matrix_to_quat_wxyz, quat_from_to
 from holomj.formats.usd_prims import mesh_prim, quatf, rotation_from_quat, sdf, string_attr
+from holomj.formats.welded_bodies import welded_inertia
 
 
 def apply_mass(prim: Any, geo: ModelGeometry, body: int, members: list[int]) -> None:
@@ -39,28 +40,14 @@ def apply_mass(prim: Any, geo: ModelGeometry, body: int, members: list[int]) -> 
 def _composite(
     geo: ModelGeometry, body: int, members: list[int]
 ) -> tuple[float, np.ndarray, np.ndarray, np.ndarray]:
-    """Mass, centre of mass, principal inertia and axes of welded bodies, in ``body``'s
-    frame."""
-    model, data = geo.model, geo.data
+    """Mass, centre of mass, principal inertia and axes (a quaternion) of welded bodies, in
+    ``body``'s frame."""
     bpos, brot = geo.body_pose(body)
-    masses = np.array([float(model.body_mass[m]) for m in members])
-    total = float(masses.sum())
-    if total <= 0:
+    found = welded_inertia(geo, members, bpos, brot)
+    if found is None:
         return 0.0, np.zeros(3), np.zeros(3), np.array([1.0, 0, 0, 0])
-    centres = np.array([brot.T @ (data.xipos[m] - bpos) for m in members])
-    com = (masses[:, None] * centres).sum(axis=0) / total
-    tensor = np.zeros((3, 3))
-    for index, member in enumerate(members):
-        irot = brot.T @ data.ximat[member].reshape(3, 3)
-        local = irot @ np.diag(model.body_inertia[member]) @ irot.T
-        offset = centres[index] - com
-        tensor += local + masses[index] * (
-            np.dot(offset, offset) * np.eye(3) - np.outer(offset, offset)
-        )
-    values, vectors = np.linalg.eigh(tensor)
-    if np.linalg.det(vectors) < 0:
-        vectors[:, 2] *= -1
-    return total, com, values, matrix_to_quat_wxyz(vectors)
+    total, centre, values, vectors = found
+    return total, centre, values, matrix_to_quat_wxyz(vectors)
 
 
 def define_joint(

@@ -37,7 +37,7 @@ from holomj.jobs.folder import (
     write_scene_folder,
 )
 from holomj.jobs.plan import check_planner
-from holomj.jobs.receptacle_priors import DEFAULT_COUNT, prior_requests
+from holomj.jobs.receptacle_priors import DEFAULT_COUNT, instruction_requests, prior_requests
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.physics.scene_io import loaded_from_compiled
@@ -285,7 +285,7 @@ def _drawn_requests(
     _check_count(count)
     category = library.get(find_object(scene, receptacle_id).asset).meta.category
     if instruction is not None:
-        requests = _instruction_requests(instruction, library, count)
+        requests = instruction_requests(instruction, library, count)
         if requests:
             return requests, "instruction"
     return prior_requests(category, library, stage_rng(seed, "populate", "priors"), count)
@@ -365,29 +365,6 @@ def _chat(
     except InputError as err:
         return None, err.one_line()
     return VisionChat(config, images=images_enabled(images), seed=seed, log=log), ""
-
-
-def _instruction_requests(
-    instruction: str, library: AssetLibrary, count: int
-) -> list[tuple[str, int]]:
-    """The small objects an instruction names that the library holds (at most ``count``)."""
-    from holomj.plan.knowledge import knowledge_base
-    from holomj.plan.prompt import parse_prompt
-
-    kb = knowledge_base()
-    requests: list[tuple[str, int]] = []
-    left = count
-    for request in parse_prompt(instruction, kb).objects:
-        kind = kb.objects.get(request.kind)
-        if request.excluded or kind is None or kind.placement != "object" or left <= 0:
-            continue
-        assets = [a for a in library.by_category(kind.category) if "object" in a.meta.placement]
-        if not assets:
-            continue
-        n = min(request.quantity or (2 if request.plural else 1), left)
-        requests.append((kind.category, n))
-        left -= n
-    return requests
 
 
 def _validate(scene: SceneSpec, library: AssetLibrary, folder: Path) -> StabilityReport:

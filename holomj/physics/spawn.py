@@ -48,6 +48,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from shapely.geometry import Point, Polygon
 
 from holomj.errors import InputError
 from holomj.library.store import AssetLibrary, LibraryAsset
@@ -442,32 +443,38 @@ def _judge_candidate(
     k: int,
     outcome: Outcome,
 ) -> str | None:
-    return _judge(world, outcome, surfaces[k], bodies[surfaces[k].part], upright, before)
+    surface = surfaces[k]
+    return landing_problem(
+        world, outcome, surface.polygon, surface.height, bodies[surface.part], upright, before
+    )
 
 
-def _judge(
+def landing_problem(
     world: DropWorld,
     outcome: Outcome,
-    surface: WorldSurface,
+    polygon: Polygon,
+    surface_z: float | None,
     rec_body: int,
     upright: bool,
     before: dict[str, np.ndarray],
+    receptacle: str = "the receptacle",
 ) -> str | None:
-    """Why a dropped candidate is rejected, or None when it is accepted."""
-    from shapely.geometry import Point
-
-    placed_bodies = {world.bodies[object_id].body for object_id in before}
+    """Why a dropped object's outcome is rejected (the rule of spawn-and-drop), or None when it
+    is accepted: it must stay finite, not end more than ``FALL_TOL_M`` below ``surface_z``
+    (None: no such check), be at rest, stand over ``polygon``, touch ``rec_body`` and no
+    object placed before, be upright when ``upright``, and leave those objects (``before``:
+    their positions) where they were. ``receptacle`` names the receptacle in the reasons."""
     if not outcome.finite:
         return "simulation diverged"
-    if outcome.position[2] < surface.height - FALL_TOL_M:
+    if surface_z is not None and outcome.position[2] < surface_z - FALL_TOL_M:
         return "fell off"
     if outcome.speed > REST_SPEED or outcome.spin > REST_SPIN:
         return "still moving"
-    if not surface.polygon.contains(Point(outcome.position[0], outcome.position[1])):
+    if not polygon.contains(Point(float(outcome.position[0]), float(outcome.position[1]))):
         return "off the surface"
     if rec_body not in outcome.touches:
-        return "not resting on the receptacle"
-    if outcome.touches & placed_bodies:
+        return f"not resting on {receptacle}"
+    if outcome.touches & {world.bodies[object_id].body for object_id in before}:
         return "leans on another object"
     if upright and outcome.tilt_deg > UPRIGHT_TOL_DEG:
         return "not upright"

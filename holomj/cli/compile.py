@@ -122,11 +122,11 @@ def _print_report(report: CompileReport) -> None:
         f"{scene.windows} windows, {scene.objects} objects; "
         f"{model.bodies} bodies, {model.geoms} geoms, {model.total_mass_kg} kg"
     )
-    if report.robot is not None:
-        x, y, _ = report.robot["position"]
+    robot = report.robot
+    if robot is not None:
+        x, y, _ = robot.position
         out_console.print(
-            f"  robot {report.robot['name']} at ({x:.2f}, {y:.2f}), yaw "
-            f"{report.robot['yaw_deg']:.1f}°, in {report.robot['room']}"
+            f"  robot {robot.name} at ({x:.2f}, {y:.2f}), yaw {robot.yaw_deg:.1f}°, in {robot.room}"
         )
     if report.stand is not None:
         _print_stand(report.stand)

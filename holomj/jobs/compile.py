@@ -17,6 +17,7 @@ writes it marked ``"valid": false`` in ``import_report.json``.
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -32,6 +33,7 @@ from holomj.mjcf.objects import Furniture
 from holomj.physics.smoke import simulate
 from holomj.physics.standing import StandOutcome, make_stand
 from holomj.spec.report import StabilityReport
+from holomj.spec.robot import RobotRecord
 from holomj.spec.scene import SceneSpec
 
 FIXED_FORMATS = ("procthor", "holodeck", "scenedef")  # made to stand unless fix=False
@@ -40,6 +42,16 @@ MAX_NAMED = 8  # unsaved objects named in the error message
 
 class SceneUnstableError(HolomjError):
     """Objects of an imported scene could not be made to stand. Exit code 1."""
+
+
+@dataclass(frozen=True)
+class RobotSpot:
+    """The robot a compile attached: its name, where its base stands, its heading and room."""
+
+    name: str
+    position: list[float]
+    yaw_deg: float
+    room: str | None
 
 
 @dataclass
@@ -55,7 +67,7 @@ class CompileReport:
     warnings: list[str]
     sim_warnings: dict[str, int]
     timings_s: dict[str, float] = field(default_factory=dict)
-    robot: dict[str, Any] | None = None
+    robot: RobotSpot | None = None
     stand: dict[str, Any] | None = None  # what making it stand changed (None: not run)
     merged: list[dict[str, str]] = field(default_factory=list)  # fixtures of a stand-in
 
@@ -66,7 +78,13 @@ class CompileReport:
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-able form."""
-        return {**self.__dict__, "scene": self.scene.to_dict(), "model": self.model.to_dict()}
+        robot = None if self.robot is None else dataclasses.asdict(self.robot)
+        return {
+            **self.__dict__,
+            "scene": self.scene.to_dict(),
+            "model": self.model.to_dict(),
+            "robot": robot,
+        }
 
 
 def compile_file(
@@ -218,13 +236,8 @@ def _verdict(report: StabilityReport | None) -> str:
     return f"{report.counts.get('penetrations', 0)} penetrations, warnings {report.warnings}"
 
 
-def _robot_summary(record: Any) -> dict[str, Any] | None:
+def _robot_summary(record: RobotRecord | None) -> RobotSpot | None:
     """Name, spot and room of the attached robot (None without one)."""
     if record is None:
         return None
-    return {
-        "name": record.name,
-        "position": list(record.position),
-        "yaw_deg": record.yaw_deg,
-        "room": record.room,
-    }
+    return RobotSpot(record.name, list(record.position), record.yaw_deg, record.room)

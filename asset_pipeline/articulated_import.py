@@ -65,7 +65,12 @@ from asset_pipeline import annotate, physical
 from asset_pipeline.decompose import decompose
 from asset_pipeline.handles import derive_grasp, lever_m
 from asset_pipeline.hulls import collision_records, postprocess
-from asset_pipeline.importer import physical_record, visual_records
+from asset_pipeline.import_records import (
+    ImportedAsset,
+    check_asset_id,
+    physical_record,
+    visual_records,
+)
 from asset_pipeline.kinematics import JointInfo, Kinematics, joint_motion, transformed
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.load import Part
@@ -188,12 +193,10 @@ class _Built:
 
 def import_articulated(path: Path | str, asset_id: str, options: Any) -> Any:
     """Import the URDF or MJCF file ``path`` as asset ``asset_id`` with ``options`` (an
-    :class:`~asset_pipeline.importer.ImportOptions`); see the module docstring."""
-    from asset_pipeline.importer import ImportedAsset, _check_id
-
+    :class:`~asset_pipeline.import_records.ImportOptions`); see the module docstring."""
     path = Path(path)
     where = str(path)
-    _check_id(asset_id)
+    check_asset_id(asset_id)
     timings: dict[str, float] = {}
     clock = time.perf_counter()
 

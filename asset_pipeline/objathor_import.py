@@ -98,7 +98,7 @@ def import_objathor_asset(
     from asset_pipeline import annotate, physical
     from asset_pipeline.decompose import decompose
     from asset_pipeline.hulls import collision_records, postprocess
-    from asset_pipeline.importer import ImportedAsset, visual_records
+    from asset_pipeline.import_records import ImportedAsset, visual_records
     from asset_pipeline.normalise import normalise
     from asset_pipeline.proximity import MeshProximity
     from asset_pipeline.repair import repair

@@ -18,7 +18,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from holomj.jobs.folder import OBJECTS_JSON, read_json_report, read_scene
+from holomj.file_names import OBJECTS_JSON
+from holomj.jobs.folder import read_json_report, read_scene
 from holomj.refinement.pointing import PinholeCamera
 from holomj.refinement.summary import ObjectInfo, RoomInfo, SceneSummary
 

@@ -29,6 +29,7 @@ from scipy import ndimage
 
 from holomj.layout import geometry as geo
 from holomj.layout.constraints import RELATION_WEIGHT
+from holomj.layout.hard_rules import hard_checks
 from holomj.layout.room_problem import PreparedRoom
 
 Pose = tuple[int, int, int]
@@ -165,7 +166,6 @@ def reachable_share(prep: PreparedRoom, poses: dict[int, Pose]) -> float:
 
 def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
     """Nudge the furniture around unreachable pockets (see the module docstring)."""
-    from holomj.layout.solve import hard_checks
     from holomj.layout.solver_greedy import satisfied_weight
 
     meter = ReachMeter(prep)

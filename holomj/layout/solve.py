@@ -20,10 +20,10 @@ from typing import Literal
 
 import numpy as np
 from pydantic import BaseModel, Field
-from shapely.geometry import box
 
 from holomj.errors import InputError
 from holomj.layout import geometry as geo
+from holomj.layout.hard_rules import HardChecks, hard_checks
 from holomj.layout.open_pockets import open_pockets, reachable_share
 from holomj.layout.room_problem import PreparedRoom, RoomProblem
 from holomj.layout.solver_cpsat import corridor_obstacles, solve_cpsat
@@ -63,49 +63,6 @@ class UnplacedObject(BaseModel):
 
     id: str
     reason: str
-
-
-class HardChecks(BaseModel):
-    """The post-check of the hard rules on the final layout (lists name offending objects)."""
-
-    overlaps: list[str] = Field(default_factory=list)
-    clearance: list[str] = Field(default_factory=list)
-    outside_room: list[str] = Field(default_factory=list)
-    door_zones: list[str] = Field(default_factory=list)
-    windows: list[str] = Field(default_factory=list)
-    facing_wall: list[str] = Field(default_factory=list)
-    walkable: bool | None = Field(
-        default=None, description="None when not applicable (fewer than two doors)."
-    )
-    walkable_detail: str = ""
-
-    @property
-    def ok(self) -> bool:
-        """True when no hard rule is broken."""
-        return not (
-            self.overlaps
-            or self.clearance
-            or self.outside_room
-            or self.door_zones
-            or self.windows
-            or self.facing_wall
-            or self.walkable is False
-        )
-
-    def problems(self, blocking: str) -> list[str]:
-        """The broken rules in words, in rule order; ``blocking`` is said when the way between
-        the doors is blocked ("the run blocks the way between the doors")."""
-        out = [
-            *self.overlaps,
-            *self.clearance,
-            *(f"{i} outside the room" for i in self.outside_room),
-            *self.door_zones,
-            *self.windows,
-            *(f"{i} faces a wall" for i in self.facing_wall),
-        ]
-        if self.walkable is False:
-            out.append(blocking)
-        return out
 
 
 class LayoutResult(BaseModel):
@@ -307,52 +264,6 @@ def _run_cpsat(
 
 
 # --------------------------------------------------------------------------- post-check
-
-
-def hard_checks(prep: PreparedRoom, poses: dict[int, Pose]) -> tuple[HardChecks, dict[int, str]]:
-    """Test every hard rule in metres; also return, per offending object, the first problem."""
-    g = prep.grid
-    s = prep.settings
-    checks = HardChecks()
-    blame: dict[int, str] = {}
-    rects = {i: prep.footprint(i, x * g, y * g, k) for i, (x, y, k) in poses.items()}
-    ids = sorted(rects)
-    room = prep.room.buffer(1e-7)
-    for n, i in enumerate(ids):
-        a = prep.items[i].id
-        for j in ids[n + 1 :]:
-            gx, gy = geo.rect_gaps(rects[i], rects[j])
-            b = prep.items[j].id
-            if gx < -1e-7 and gy < -1e-7:
-                checks.overlaps.append(f"{a} overlaps {b}")
-                blame.setdefault(j, f"overlaps {a}")
-            elif max(gx, gy) < s.clearance_m - 1e-6:
-                checks.clearance.append(f"{a} and {b} are {max(gx, gy):.3f} m apart")
-                blame.setdefault(j, f"closer than {s.clearance_m:g} m to {a}")
-        shape = box(*rects[i])
-        if not room.covers(shape):
-            checks.outside_room.append(a)
-            blame.setdefault(i, "not inside the room")
-        for door, zone in zip(prep.problem.doors, prep.door_zones):
-            if shape.intersection(zone).area > 1e-9:
-                checks.door_zones.append(f"{a} in front of {door.id}")
-                blame.setdefault(i, f"in the keep-out zone of {door.id}")
-        if prep.items[i].tall:
-            for w in prep.items[i].windows:
-                window, zone = prep.problem.windows[w], prep.window_zones[w]
-                if shape.intersection(zone).area > 1e-9:
-                    checks.windows.append(f"{a} blocks {window.id}")
-                    blame.setdefault(i, f"taller than the sill of {window.id} and in front of it")
-        x, y, k = poses[i]
-        if not geo.front_is_clear(
-            x * g, y * g, k, prep.items[i].depth, prep.room, s.front_clearance_m
-        ):
-            checks.facing_wall.append(a)
-            blame.setdefault(i, f"faces a wall closer than {s.front_clearance_m:g} m")
-    walk = prep.walk.check(list(rects.values()))
-    checks.walkable = walk.ok if walk.applicable else None
-    checks.walkable_detail = walk.detail
-    return checks, blame
 
 
 def _enforce_hard(

@@ -27,9 +27,9 @@ import mujoco
 import numpy as np
 
 from holomj.mjcf import names
+from holomj.mjcf.colliders import collider_fields
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean
-from holomj.mjcf.objects import collider_fields
 from holomj.spec.assets import ArticulatedPart, AssetMeta
 from holomj.spec.scene import SceneObject
 

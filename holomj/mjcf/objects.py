@@ -19,23 +19,17 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 import mujoco
-import numpy as np
 
 from holomj.errors import AssetNotFoundError
 from holomj.library.store import AssetLibrary, LibraryAsset
 from holomj.mjcf import names
+from holomj.mjcf.articulation import add_moving_parts
+from holomj.mjcf.colliders import collider_fields
 from holomj.mjcf.context import BuildContext
 from holomj.mjcf.geometry import clean, yaw_quat
-from holomj.spec.assets import ArticulatedPart, AssetMeta, CollisionPart
+from holomj.spec.assets import ArticulatedPart, AssetMeta
 from holomj.spec.decor import DECOR_CATEGORIES, DECOR_GROUP, LIGHT_FIXTURE_CATEGORIES
 from holomj.spec.scene import SceneObject
-
-_PRIMITIVES = {
-    "box": mujoco.mjtGeom.mjGEOM_BOX,
-    "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER,
-    "sphere": mujoco.mjtGeom.mjGEOM_SPHERE,
-    "capsule": mujoco.mjtGeom.mjGEOM_CAPSULE,
-}
 
 
 @dataclass(frozen=True)
@@ -137,8 +131,6 @@ class ObjectBuilder:
             if decor:
                 geom.contype, geom.conaffinity, geom.group = 0, 0, DECOR_GROUP
         if meta.articulation is not None:
-            from holomj.mjcf.articulation import add_moving_parts
-
             add_moving_parts(self.ctx, body, obj, meta, handles.parts, scale, whole)
         return body
 
@@ -266,30 +258,3 @@ class ObjectBuilder:
 
     def _register(self, asset: LibraryAsset, folder: str, relative: str) -> str:
         return self.ctx.add_file(f"{folder}/{relative}", asset.path(relative).read_bytes())
-
-
-def collider_fields(
-    part: CollisionPart, scale: tuple[float, float, float], mesh_name: str | None
-) -> dict[str, object]:
-    """MjsGeom fields (type, size, pos, quat, mesh) of a collider at a given scale."""
-    pos = clean(np.array(part.pos) * np.array(scale))
-    quat = clean(part.quat)
-    if part.kind == "mesh":
-        return {"type": mujoco.mjtGeom.mjGEOM_MESH, "meshname": mesh_name, "pos": pos, "quat": quat}
-    rot = np.zeros(9)
-    mujoco.mju_quat2Mat(rot, np.array(part.quat, dtype=float))
-    # Scale factors seen along the collider's own axes.
-    lsx, lsy, lsz = np.abs(rot.reshape(3, 3).T) @ np.array(scale)
-    size = list(part.size)
-    if part.kind == "box":
-        size = [size[0] * lsx, size[1] * lsy, size[2] * lsz]
-    elif part.kind in ("cylinder", "capsule"):
-        size = [size[0] * math.sqrt(lsx * lsy), size[1] * lsz]
-    else:
-        size = [size[0] * (lsx * lsy * lsz) ** (1 / 3)]
-    return {
-        "type": _PRIMITIVES[part.kind],
-        "size": clean(size + [0.0] * (3 - len(size))),
-        "pos": pos,
-        "quat": quat,
-    }

@@ -405,6 +405,8 @@ def _read_mesh(path: Path) -> tuple[np.ndarray, np.ndarray]:
     import trimesh
 
     mesh = trimesh.load(path, force="mesh", process=False)
+    if not isinstance(mesh, trimesh.Trimesh):  # force="mesh" concatenates a scene into one
+        raise ValueError(f"{path}: not a triangle mesh")
     return np.asarray(mesh.vertices, dtype=float), np.asarray(mesh.faces, dtype=np.int64)
 
 

@@ -141,7 +141,8 @@ CONVEX_TOL_M = 0.001
 
 def decompose(mesh: trimesh.Trimesh, params: CoacdParams, manifold: bool) -> Decomposition:
     """Convex bodies as they are, the rest through the CoACD fallback chain."""
-    convex, rest = [], []
+    convex: list[np.ndarray] = []
+    rest: list[np.ndarray] = []
     for faces in bodies(mesh):
         points = np.asarray(mesh.vertices)[np.unique(mesh.faces[faces])]
         centroids = np.asarray(mesh.triangles_center)[faces]
@@ -332,7 +333,7 @@ def _child(src: str, dst: str) -> None:
     parts = coacd.run_coacd(coacd.Mesh(vertices, faces), **kwargs)
     arrays = {f"hull_{i}": np.asarray(v, dtype=np.float64) for i, (v, _) in enumerate(parts)}
     tmp = dst + ".part.npz"
-    np.savez(tmp, count=np.array(len(parts)), **arrays)
+    np.savez(tmp, count=np.array(len(parts)), **arrays)  # type: ignore[arg-type]  # numpy's stub types **kwds as its allow_pickle flag
     os.replace(tmp, dst)
 
 

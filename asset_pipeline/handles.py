@@ -131,11 +131,13 @@ def frame_quat(x_axis: np.ndarray, z_axis: np.ndarray) -> tuple[float, float, fl
     mujoco.mju_mat2Quat(quat, matrix.ravel())
     if quat[0] < 0:
         quat = -quat
-    return tuple(round(float(v), 9) + 0.0 for v in quat)  # type: ignore[return-value]
+    qw, qx, qy, qz = (round(float(v), 9) + 0.0 for v in quat)
+    return (qw, qx, qy, qz)
 
 
 def _round(vector: np.ndarray) -> tuple[float, float, float]:
-    return tuple(round(float(v), 6) + 0.0 for v in vector)  # type: ignore[return-value]
+    x, y, z = (round(float(v), 6) + 0.0 for v in vector)
+    return (x, y, z)
 
 
 def lever_m(pos: tuple[float, float, float], axis: np.ndarray, anchor: np.ndarray) -> float:

@@ -49,10 +49,24 @@ class Collider:
     pos: tuple[float, float, float] = (0.0, 0.0, 0.0)
     quat: tuple[float, float, float, float] = (1.0, 0.0, 0.0, 0.0)
 
+    @property
+    def hull(self) -> tuple[np.ndarray, np.ndarray]:
+        """A mesh collider's (vertices, faces); a ValueError for a box."""
+        if self.vertices is None or self.faces is None:
+            raise ValueError(f"a {self.kind} collider has no hull")
+        return self.vertices, self.faces
+
+    @property
+    def box(self) -> tuple[float, float, float]:
+        """A box collider's half sizes; a ValueError for a hull."""
+        if self.size is None:
+            raise ValueError(f"a {self.kind} collider has no box size")
+        return self.size
+
     def points(self) -> np.ndarray:
         """Hull vertices, or the eight box corners."""
         if self.kind == "mesh":
-            return self.vertices
+            return self.hull[0]
         signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)])
         rot = Rotation.from_quat([*self.quat[1:], self.quat[0]]).as_matrix()
         return (signs * np.asarray(self.size)) @ rot.T + np.asarray(self.pos)
@@ -79,13 +93,13 @@ def collision_records(
     for k, collider in enumerate(colliders):
         if collider.kind == "mesh":
             name = f"{prefix}hull_{k:02d}.obj"
-            files[name] = obj_bytes(collider.vertices, collider.faces)
+            files[name] = obj_bytes(*collider.hull)
             collision.append({"kind": "mesh", "mesh": name, "volume_m3": collider.volume})
         else:
             collision.append(
                 {
                     "kind": "box",
-                    "size": list(collider.size),
+                    "size": list(collider.box),
                     "pos": list(collider.pos),
                     "quat": list(collider.quat),
                     "volume_m3": collider.volume,
@@ -118,11 +132,12 @@ def postprocess(
             points, moved = _pull_inside(points, proximity, tol)
             pulled += int(moved)
         collider = _mesh_collider(points) if points is not None else None
-        if collider is None or _is_sliver(collider.vertices, collider.volume):
+        if collider is None or _is_sliver(collider.hull[0], collider.volume):
             slivers.append(points if points is not None else raw)
             continue
         hulls.append(collider)
-    boxes, dropped = [], 0
+    boxes: list[Collider] = []
+    dropped = 0
     for points in slivers:
         box = _box_collider(points)
         if _covered(points, hulls) or (box.volume < TINY_VOLUME_M3 and (hulls or boxes)):
@@ -140,7 +155,7 @@ def postprocess(
         reference, ref_volume = "mesh", mesh_volume
     else:
         reference, ref_volume = "convex_hull", _hull_volume(np.asarray(mesh.vertices))
-    max_vertices = max((len(c.vertices) for c in hulls), default=4)
+    max_vertices = max((len(c.hull[0]) for c in hulls), default=4)
     quality = {
         "hull_count": len(colliders),
         "mesh_hulls": len(hulls),
@@ -270,13 +285,15 @@ def _box_collider(points: np.ndarray) -> Collider:
     xyzw = Rotation.from_matrix(axes).as_quat()
     quat = np.array([xyzw[3], *xyzw[:3]])
     quat = quat if quat[0] >= 0 else -quat
-    size = tuple(round(float(h), 6) for h in half)
+    sx, sy, sz = (round(float(h), 6) for h in half)
+    px, py, pz = (round(float(c), 6) for c in centre)
+    qw, qx, qy, qz = (round(float(q), 8) for q in quat)
     return Collider(
         kind="box",
-        volume=float(8 * np.prod(size)),
-        size=size,  # type: ignore[arg-type]
-        pos=tuple(round(float(c), 6) for c in centre),  # type: ignore[arg-type]
-        quat=tuple(round(float(q), 8) for q in quat),  # type: ignore[arg-type]
+        volume=float(8 * np.prod((sx, sy, sz))),
+        size=(sx, sy, sz),
+        pos=(px, py, pz),
+        quat=(qw, qx, qy, qz),
     )
 
 

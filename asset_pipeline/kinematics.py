@@ -17,6 +17,8 @@ from asset_pipeline.load import Material, Part
 
 DEFAULT_RGBA = (0.7, 0.7, 0.7, 1.0)  # what load.py gives a mesh without a material
 
+JointKind = Literal["hinge", "slide", "fixed"]
+
 
 @dataclass
 class LinkGeometry:
@@ -37,7 +39,7 @@ class JointInfo:
     """
 
     name: str
-    type: Literal["hinge", "slide", "fixed"]
+    type: JointKind
     parent: str
     child: str
     axis: np.ndarray
@@ -50,6 +52,13 @@ class JointInfo:
     stiffness: float | None = None
     springref: float | None = None
     where: str = ""
+
+    def limits(self) -> tuple[float, float]:
+        """The joint's range; a ValueError for an unlimited one (an articulated import closes
+        every part first, giving an unlimited hinge the range (-pi, pi))."""
+        if self.range is None:
+            raise ValueError(f"joint {self.name!r} has no range")
+        return self.range
 
 
 @dataclass
@@ -94,7 +103,8 @@ def coloured(part: Part, rgba: tuple[float, float, float, float] | None) -> Part
         return part
     if part.material.rgba != DEFAULT_RGBA:
         return part
-    return replace(part, material=Material(rgba=tuple(rgba), name=part.material.name))  # type: ignore[arg-type]
+    r, g, b, a = rgba
+    return replace(part, material=Material(rgba=(r, g, b, a), name=part.material.name))
 
 
 def primitive(kind: str, size: tuple[float, ...]) -> Part:

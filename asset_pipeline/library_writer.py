@@ -27,7 +27,7 @@ import json
 import os
 import re
 import shutil
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 from typing import Any
@@ -145,10 +145,7 @@ def add_assets(root: Path | str, bundles: Sequence[AssetBundle]) -> Path:
         )
         try:
             for bundle in checked:
-                replace_folder(
-                    root / bundle.folder_name,
-                    lambda tmp, b=bundle: _fill_bundle(tmp, b, root / LIBRARY_BLOBS),
-                )
+                replace_folder(root / bundle.folder_name, _filler(bundle, root / LIBRARY_BLOBS))
             _commit_index(root, new_index)
         except BaseException:
             for bundle in checked:
@@ -255,6 +252,15 @@ def _free_folder(base: str, taken: set[str]) -> str:
         if candidate not in taken:
             return candidate
     raise AssertionError("unreachable")
+
+
+def _filler(bundle: AssetBundle, store: Path) -> Callable[[Path], None]:
+    """What fills the temporary folder of ``bundle`` (its files, blobs in ``store``)."""
+
+    def fill(folder: Path) -> None:
+        _fill_bundle(folder, bundle, store)
+
+    return fill
 
 
 def _fill_bundle(folder: Path, bundle: AssetBundle, store: Path) -> None:

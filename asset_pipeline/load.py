@@ -194,7 +194,8 @@ def _rgba(color) -> tuple[float, float, float, float]:
     if np.asarray(color).dtype.kind in "iu" or values.max() > 1.0:
         values = values / 255.0
     values = np.clip(values, 0.0, 1.0)
-    return tuple(round(float(v), 4) for v in values)  # type: ignore[return-value]
+    r, g, b, a = (round(float(v), 4) for v in values)
+    return (r, g, b, a)
 
 
 def _png(image) -> bytes:

@@ -19,12 +19,7 @@ degraded cache entry is not reused: the next import of the file tries CoACD agai
 from __future__ import annotations
 
 import dataclasses
-import functools
-import hashlib
-import json
 import multiprocessing
-import re
-import secrets
 import shutil
 import time
 from collections.abc import Callable, Iterable, Sequence
@@ -34,44 +29,22 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from asset_pipeline.library_writer import AssetBundle, add_assets, dumps_json
-from holomj.atomic import replace_folder
-from holomj.errors import HolomjError, InputError
-from holomj.file_names import LIBRARY_INDEX, LIBRARY_META
-from holomj.spec.assets import AssetMeta
-from holomj.spec.base import read_json, validate_model
-
-MESH_SUFFIXES = (".glb", ".gltf", ".obj", ".stl", ".ply")
-# URDF and MJCF files: articulated assets (asset_pipeline.articulated_import).
-ARTICULATED_SUFFIXES = (".urdf", ".xml", ".mjcf")
-COMPANION_SUFFIXES = (".bin", ".mtl", ".png", ".jpg", ".jpeg")
-# Collision meshes shipped beside real assets (V-HACD, LIBERO): not assets themselves.
-_COLLISION_STEMS = re.compile(r"(_vhacd|_col|_collision|_coll)$", re.IGNORECASE)
-# Path components that say nothing about the asset (scanner, exporter and dataset layouts):
-# an id comes from the nearest component that is not one of these.
-_GENERIC_NAMES = frozenset(
-    {
-        "textured", "texture", "textures", "model", "models", "mesh", "meshes", "scene",
-        "untitled", "object", "objects", "base", "obj", "glb", "gltf", "fbx", "source",
-        "sources", "src", "tsdf", "poisson", "visual", "visuals", "collision", "export",
-        "exports", "output", "default", "final", "asset", "assets", "data", "file", "files",
-        "geometry", "raw", "processed", "merged", "clean", "cleaned", "simplified", "lod",
-        "urdf", "sdf", "mjcf", "normalized", "normalised", "optimized", "optimised",
-        "model_normalized", "model_watertight",
-    }
-)  # fmt: skip
-# Generic by pattern: scan resolutions (google_16k, google_512k, 4k), levels of detail
-# (lod0), and bare runs of digits and separators (0001, 2024-01).
-_GENERIC_PATTERN = re.compile(
-    r"(google_\d+k|\d+k|lod_?\d*|[\d_.\-]*|untitled[_\-]?\d*|mesh[_\-]?\d*|model[_\-]?\d*)",
-    re.IGNORECASE,
+from asset_pipeline.import_cache import (
+    CACHE_DIR,
+    DERIVATION_FILE,
+    PENDING_DIR,
+    cache_key,
+    load_cached,
+    pipeline_version,
+    store_result,
+    sweep_pending,
 )
-CACHE_DIR = ".cache"
-PENDING_DIR = "pending"  # inside CACHE_DIR: degraded results on their way to the library
-PENDING_MAX_AGE_S = 3600.0  # older pending folders are debris of killed runs
-DERIVATION_FILE = "derivation.json"
-MAX_ID_TEXT = 100  # ids may have 128 characters: room for a "-N" suffix
-
+from asset_pipeline.import_plan import (
+    ImportJob,
+)
+from asset_pipeline.library_writer import AssetBundle, add_assets, dumps_json
+from holomj.errors import HolomjError, InputError
+from holomj.spec.assets import AssetMeta
 
 PRESETS: dict[str, dict[str, float | int | None]] = {
     # Seconds per object: previews, tests, CI.
@@ -109,20 +82,11 @@ def coacd_params(preset: str = "default", **overrides: float | int | None) -> An
         raise InputError(
             f"unknown preset {preset!r}", where="--preset", fix=f"use one of: {', '.join(PRESETS)}"
         )
-    given = {k: v for k, v in overrides.items() if v is not None}
+    given: dict[str, float | int | None] = {k: v for k, v in overrides.items() if v is not None}
     if "threshold" in given and "preprocessed_threshold" not in given:
         given["preprocessed_threshold"] = None  # a threshold asked for holds for every mesh
-    values = {**PRESETS[preset], **given}
+    values: dict[str, Any] = {**PRESETS[preset], **given}  # field name -> value, as the table
     return dataclasses.replace(CoacdParams(), **values)
-
-
-@dataclass(frozen=True)
-class ImportJob:
-    """One file to import as one asset."""
-
-    path: Path
-    asset_id: str
-    id_note: str | None = None  # why the id is not the one the file name gives, if so
 
 
 @dataclass
@@ -183,269 +147,6 @@ def _outcome_dict(outcome: JobOutcome) -> dict[str, Any]:
     return data
 
 
-def find_mesh_files(paths: Sequence[Path]) -> list[Path]:
-    """Mesh files named directly, or found (recursively, sorted) in named folders.
-
-    In folders, URDF files and MJCF files (``.xml``/``.mjcf`` with a ``<mujoco>`` root) count
-    too, and the meshes in and below a folder holding one are its links, not assets of their
-    own (a PartNet-Mobility model folder is one asset).
-    """
-    from asset_pipeline.articulated_import import articulated_format
-
-    found: list[Path] = []
-    for path in paths:
-        path = Path(path)
-        if path.is_dir():
-            files = [p for p in sorted(path.rglob("*")) if p.is_file()]
-            described = [
-                p
-                for p in files
-                if p.suffix.lower() in ARTICULATED_SUFFIXES and articulated_format(p) is not None
-            ]
-            owners = {p.parent for p in described}
-            found.extend(
-                p
-                for p in files
-                if p in described
-                or (
-                    p.suffix.lower() in MESH_SUFFIXES
-                    and not _COLLISION_STEMS.search(p.stem)
-                    and not owners.intersection(p.parents)
-                )
-            )
-        elif path.exists():
-            found.append(path)
-        else:
-            raise InputError("file not found", where=str(path))
-    return found
-
-
-def asset_id_for(path: Path) -> str:
-    """An asset id from the nearest meaningful component of ``path``.
-
-    The file name, else its folder's name, else the next folder up: generic components
-    (``textured.obj``, ``google_16k/``, ``meshes/``, ``tsdf/``, ``model.glb``, bare numbers;
-    see :data:`_GENERIC_NAMES`) are skipped, so YCB's ``002_master_chef_can/google_16k/
-    textured.obj`` is ``002_master_chef_can``. A texture-resolution suffix (``_1k``) is
-    dropped; other characters not allowed in an id become ``_``. When every component is
-    generic, the file name is used anyway.
-    """
-    from asset_pipeline.urdf import asset_id_hint
-
-    path = Path(path)
-    hint = asset_id_hint(path)  # PartNet-Mobility's mobility.urdf: <model_cat>_<folder>
-    if hint is not None:
-        return _id_text(hint) or "asset"
-    names = [path.stem, *(p.name for p in path.parents if p.name)]
-    for name in names:
-        ident = _id_text(name)
-        if ident and not _is_generic(ident):
-            return ident
-    return _id_text(path.stem) or "asset"
-
-
-def _id_text(name: str) -> str:
-    """``name`` as id text: resolution suffix dropped, odd characters as ``_``."""
-    name = re.sub(r"[_\-](1k|2k|4k|8k)$", "", name, flags=re.IGNORECASE)
-    return re.sub(r"[^A-Za-z0-9_.\-]+", "_", name).strip("_.-")[:MAX_ID_TEXT].rstrip("_.-")
-
-
-def _is_generic(name: str) -> bool:
-    """Whether a path component says nothing about the asset."""
-    return name.lower() in _GENERIC_NAMES or bool(_GENERIC_PATTERN.fullmatch(name))
-
-
-@dataclass(frozen=True)
-class ExistingAsset:
-    """An asset already in the library: where its files came from, when it says so."""
-
-    asset_id: str
-    source_file: str | None = None
-    source_sha256: str | None = None
-
-    def same_source(self, path: Path, sha256: str) -> bool:
-        """Whether ``path`` (with bytes hashing to ``sha256``) is this asset's source file."""
-        if self.source_sha256 is not None and self.source_sha256 == sha256:
-            return True
-        if self.source_file is None:
-            return False
-        try:
-            return Path(self.source_file).resolve() == Path(path).resolve()
-        except OSError:
-            return False
-
-    def describe(self) -> str:
-        """A few words on where the asset came from, for messages."""
-        return f"from {self.source_file}" if self.source_file else "not imported from a file"
-
-
-def existing_assets(root: Path) -> dict[str, ExistingAsset]:
-    """The assets of the library at ``root`` (none when there is no library yet), with the
-    source file and hash their ``derivation.json`` records."""
-    from holomj.library.store import AssetLibrary
-
-    if not (Path(root) / LIBRARY_INDEX).is_file():
-        return {}
-    library = AssetLibrary.open(root)
-    found = {}
-    for asset_id in library.ids():
-        source_file = source_sha = None
-        try:
-            derivation = json.loads((library.get(asset_id).root / DERIVATION_FILE).read_text())
-            source = derivation.get("source") or {}
-            source_file, source_sha = source.get("file"), source.get("sha256")
-        except (HolomjError, OSError, ValueError, AttributeError):
-            pass  # a builtin or procedural asset: no derivation of an import
-        found[asset_id] = ExistingAsset(asset_id, source_file, source_sha)
-    return found
-
-
-def plan_jobs(
-    paths: Sequence[Path],
-    asset_id: str | None = None,
-    existing: dict[str, ExistingAsset] | None = None,
-) -> list[ImportJob]:
-    """Jobs for the given files and folders, with ids that never silently reuse another's.
-
-    Ids come from :func:`asset_id_for` (or ``asset_id`` for one file). An id already planned
-    in this run, or held in the library (``existing``, see :func:`existing_assets`) by an
-    asset imported from another file, gets the first free suffix ``-2``, ``-3``...; the job's
-    ``id_note`` says so. The library's asset of the *same* file (same path or same bytes)
-    keeps its id: re-importing a file updates its asset. An explicit ``asset_id`` held by
-    another asset is an :class:`~holomj.errors.InputError` (nothing is replaced).
-    """
-    from asset_pipeline.articulated_import import articulated_format, check_articulated_file
-
-    files = find_mesh_files(paths)
-    if not files:
-        raise InputError("no mesh files found", where=", ".join(str(p) for p in paths))
-    for path in files:  # a malformed URDF/MJCF is bad input: refused before anything is written
-        if articulated_format(path) is not None:
-            check_articulated_file(path)
-    if asset_id is not None and len(files) > 1:
-        raise InputError("--id names one asset but several files were given", where="--id")
-    existing = existing or {}
-    jobs: list[ImportJob] = []
-    used: set[str] = set()
-    for path in files:
-        base = asset_id or asset_id_for(path)
-        digest = hashlib.sha256(path.read_bytes()).hexdigest() if existing else ""
-
-        def taken(ident: str, path: Path = path, digest: str = digest) -> bool:
-            held = existing.get(ident)
-            return ident in used or (held is not None and not held.same_source(path, digest))
-
-        if asset_id is not None and taken(asset_id):
-            raise InputError(
-                f"asset id {asset_id!r} is already in the library "
-                f"({existing[asset_id].describe()})",
-                where="--id",
-                fix=f"choose another --id, or remove the asset first: "
-                f"holomj assets remove {asset_id}",
-            )
-        ident, n = base, 1
-        while taken(ident):
-            n += 1
-            ident = f"{base}-{n}"
-        note = None
-        if ident != base:
-            where = (
-                "by another file of this import"
-                if base in used
-                else f"in the library ({existing[base].describe()})"
-            )
-            note = f"id {base!r} is taken {where}; imported as {ident!r}"
-        elif base in existing:
-            note = f"replaces {base!r}, imported before from the same file"
-        used.add(ident)
-        jobs.append(ImportJob(path=path, asset_id=ident, id_note=note))
-    return jobs
-
-
-def source_files(path: Path) -> list[Path]:
-    """The file and its companions (same folder, and a ``textures/`` folder) that shape it."""
-    folder = path.parent
-    companions = [
-        p
-        for p in sorted(folder.iterdir())
-        if p.is_file() and p != path and p.suffix.lower() in COMPANION_SUFFIXES
-    ]
-    textures = folder / "textures"
-    if textures.is_dir():
-        companions += sorted(p for p in textures.iterdir() if p.is_file())
-    from asset_pipeline.articulated_import import articulated_format, articulated_sources
-
-    if articulated_format(path) is not None:  # the link meshes it names, wherever they are
-        companions += [p for p in articulated_sources(path) if p not in companions]
-    return [path, *companions]
-
-
-@functools.cache
-def pipeline_version() -> str:
-    """A hash of the asset pipeline's own code: a code change invalidates every cache entry."""
-    digest = hashlib.sha256()
-    package = Path(__file__).parent
-    for source in sorted(package.rglob("*.py")) + sorted((package / "data").glob("*.json")):
-        if "procedural" in source.parts:
-            continue
-        digest.update(source.relative_to(package).as_posix().encode())
-        digest.update(source.read_bytes())
-    return digest.hexdigest()[:16]
-
-
-def cache_key(path: Path, options: Any) -> str:
-    """Content address of one import: pipeline code + options + source bytes."""
-    digest = hashlib.sha256()
-    digest.update(pipeline_version().encode())
-    digest.update(json.dumps(_jsonable(options), sort_keys=True).encode())
-    for source in source_files(path):
-        digest.update(source.name.encode())
-        digest.update(hashlib.sha256(source.read_bytes()).digest())
-    return digest.hexdigest()[:32]
-
-
-def _jsonable(value: Any) -> Any:
-    if dataclasses.is_dataclass(value):
-        return {f.name: _jsonable(getattr(value, f.name)) for f in dataclasses.fields(value)}
-    if isinstance(value, (list, tuple)):
-        return [_jsonable(v) for v in value]
-    if isinstance(value, Path):
-        return str(value)
-    return value
-
-
-def load_cached(cache_root: Path, key: str, asset_id: str) -> tuple[AssetBundle, dict] | None:
-    """The cached bundle for ``key``, re-labelled with ``asset_id``; None if absent or broken."""
-    folder = cache_root / key
-    meta_path = folder / LIBRARY_META
-    if not meta_path.is_file():
-        return None
-    try:
-        meta = validate_model(AssetMeta, read_json(meta_path), str(meta_path))
-        files = {
-            p.relative_to(folder).as_posix(): p.read_bytes()
-            for p in sorted(folder.rglob("*"))
-            if p.is_file() and p.name != LIBRARY_META
-        }
-        report = json.loads(files.get(DERIVATION_FILE, b"{}"))
-    except (HolomjError, OSError, ValueError):
-        return None
-    return AssetBundle(meta=meta.model_copy(update={"id": asset_id}), files=files), report
-
-
-def store_cached(cache_root: Path, key: str, bundle: AssetBundle) -> None:
-    """Cache ``bundle`` under ``key`` (atomically: a killed write leaves no entry)."""
-
-    def fill(folder: Path) -> None:
-        for rel, data in bundle.files.items():
-            target = folder / rel
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(data)
-        (folder / LIBRARY_META).write_bytes(dumps_json(bundle.meta.model_dump(mode="json")))
-
-    replace_folder(cache_root / key, fill)
-
-
 def process_job(
     job: ImportJob,
     options: Any,
@@ -488,7 +189,7 @@ def import_cached(
         else:
             bundle, report = build(entry_key)
             final = not report["degraded"] or report["fallback_accepted"]
-            outcome.entry = _store_result(cache_root, entry_key, bundle, final)
+            outcome.entry = store_result(cache_root, entry_key, bundle, final)
         outcome.ok = True
         outcome.degraded = bool(report.get("degraded"))
         outcome.degraded_reason = report.get("degraded_reason")
@@ -531,31 +232,6 @@ def finish_bundle(
     return AssetBundle(meta=bundle.meta, files=files), report
 
 
-def _store_result(cache_root: Path, key: str, bundle: AssetBundle, final: bool) -> str:
-    """Store ``bundle`` as the cache entry ``key`` or, if not ``final``, in a pending folder.
-
-    Returns the folder (relative to ``cache_root``) that holds it.
-    """
-    entry = key if final else f"{PENDING_DIR}/{key}-{secrets.token_hex(4)}"
-    store_cached(cache_root, entry, bundle)
-    return entry
-
-
-def _sweep_pending(cache_root: Path, max_age_s: float = PENDING_MAX_AGE_S) -> None:
-    """Delete pending folders older than ``max_age_s`` (left behind by killed imports)."""
-    pending = cache_root / PENDING_DIR
-    if not pending.is_dir():
-        return
-    cutoff = time.time() - max_age_s
-    for entry in pending.iterdir():
-        try:
-            stale = entry.stat().st_mtime < cutoff
-        except OSError:
-            continue
-        if stale:
-            shutil.rmtree(entry, ignore_errors=True)
-
-
 def run_imports(
     jobs: Sequence[ImportJob],
     library_root: Path,
@@ -575,7 +251,7 @@ def run_imports(
     root = Path(library_root)
     cache_root = root / CACHE_DIR
     cache_root.mkdir(parents=True, exist_ok=True)
-    _sweep_pending(cache_root)
+    sweep_pending(cache_root)
     args = (options, cache_root, thumbnails, accept_fallback)
     summary = run_jobs(
         jobs, process_job, args, root, workers=workers, on_done=on_done, key=_job_key

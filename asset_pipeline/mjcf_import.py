@@ -28,7 +28,7 @@ import numpy as np
 
 from asset_pipeline.kinematics import JointInfo, Kinematics, LinkGeometry, primitive
 from asset_pipeline.load import Material, Part
-from asset_pipeline.urdf import parse_xml, read_text
+from asset_pipeline.xml_tree import parse_xml, read_text
 from holomj.errors import FormatError
 
 MJCF_SUFFIXES = (".xml", ".mjcf")
@@ -182,6 +182,7 @@ def _joint_info(
     qpos = int(model.jnt_qposadr[joint])
     dof = int(model.jnt_dofadr[joint])
     limited = bool(model.jnt_limited[joint])
+    low, high = model.jnt_range[joint]
     return JointInfo(
         name=model.joint(joint).name or f"{child}_{'hinge' if hinge else 'slide'}",
         type="hinge" if hinge else "slide",
@@ -189,7 +190,7 @@ def _joint_info(
         child=child,
         axis=np.array(data.xaxis[joint], dtype=float),
         anchor=np.array(data.xanchor[joint], dtype=float),
-        range=tuple(float(v) for v in model.jnt_range[joint]) if limited else None,  # type: ignore[arg-type]
+        range=(float(low), float(high)) if limited else None,
         value=float(model.qpos0[qpos]),
         damping=float(model.dof_damping[dof]),
         frictionloss=float(model.dof_frictionloss[dof]),
@@ -234,8 +235,8 @@ def _geom_part(
     vertices = part.vertices @ rot.T + data.geom_xpos[geom]
     material = int(model.geom_matid[geom])
     rgba = model.mat_rgba[material] if material >= 0 else model.geom_rgba[geom]
-    colour = tuple(round(float(v), 4) for v in np.clip(rgba, 0.0, 1.0))
-    return Part(vertices=vertices, faces=part.faces, uv=None, material=Material(rgba=colour))  # type: ignore[arg-type]
+    r, g, b, a = (round(float(v), 4) for v in np.clip(rgba, 0.0, 1.0))
+    return Part(vertices=vertices, faces=part.faces, uv=None, material=Material(rgba=(r, g, b, a)))
 
 
 def _body_name(model: mujoco.MjModel, body: int) -> str:

@@ -23,6 +23,9 @@ from holomj.errors import FormatError, InputError
 MIN_SIZE_M = 0.001
 MAX_SIZE_M = 50.0
 
+UpAxis = Literal["y", "z"]
+Front = Literal["+x", "-x", "+y", "-y"]  # the source axis (after up-conversion) that is the front
+
 _UP = {
     "z": np.eye(3),
     "y": np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]),
@@ -61,8 +64,8 @@ class Normalisation:
 def normalise(
     parts: list[Part],
     where: str,
-    up_axis: Literal["y", "z"],
-    front: Literal["+x", "-x", "+y", "-y"],
+    up_axis: UpAxis,
+    front: Front,
     size: tuple[float, float, float] | None,
 ) -> tuple[list[Part], Normalisation]:
     """Transform ``parts`` into the asset frame; reject absurd sizes with FormatError."""
@@ -99,8 +102,8 @@ def normalise(
         scale=scale,
         rotation=rotation,
         translation=translation,
-        size=tuple(round(float(e), 6) for e in extent),  # type: ignore[arg-type]
-        source_size=tuple(round(float(e), 6) for e in source_size),  # type: ignore[arg-type]
+        size=_rounded3(extent),
+        source_size=_rounded3(source_size),
     )
     return out, info
 
@@ -113,3 +116,9 @@ def _bounds(vertex_sets: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
 
 def _fmt(values: np.ndarray) -> str:
     return " x ".join(f"{v:.4g}" for v in values)
+
+
+def _rounded3(values: np.ndarray) -> tuple[float, float, float]:
+    """Three extents rounded to the micrometre."""
+    x, y, z = (round(float(e), 6) for e in values)
+    return (x, y, z)

@@ -32,27 +32,31 @@ import dataclasses
 import hashlib
 import json
 import re
-import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
+from asset_pipeline import annotate, physical
 from asset_pipeline.decompose import CoacdParams
-from asset_pipeline.library_writer import AssetBundle
-from asset_pipeline.manage import (
-    CACHE_DIR,
-    ImportSummary,
-    JobOutcome,
-    finish_bundle,
-    import_cached,
-    pipeline_version,
-    run_jobs,
+from asset_pipeline.hulls import postprocess
+from asset_pipeline.import_cache import CACHE_DIR, options_json, pipeline_version
+from asset_pipeline.import_records import (
+    ID_FIX,
+    ImportedAsset,
+    StepTimer,
+    check_asset_id,
+    derived_meta,
+    file_sizes,
+    mesh_geometry,
+    source_digest,
+    surface_summary,
 )
+from asset_pipeline.library_writer import AssetBundle
+from asset_pipeline.manage import ImportSummary, JobOutcome, finish_bundle, import_cached, run_jobs
 from asset_pipeline.objathor import (
-    ID_PATTERN,
     ObjathorAnnotation,
     ObjathorJob,
     ObjathorMesh,
@@ -61,7 +65,15 @@ from asset_pipeline.objathor import (
     read_mesh,
     unity_to_asset,
 )
-from holomj.errors import FormatError, SpecError
+from asset_pipeline.proximity import MeshProximity
+from asset_pipeline.surfaces import support_surfaces
+from holomj.errors import FormatError
+from holomj.spec.assets import AssetMeta
+
+if TYPE_CHECKING:
+    from asset_pipeline.normalise import Normalisation
+    from asset_pipeline.physical import CategoryInfo, MassResult
+    from asset_pipeline.repair import Repaired
 
 __all__ = [
     "COLLIDER_MODES",
@@ -90,39 +102,148 @@ def import_objathor_asset(
     mesh: ObjathorMesh,
     annotation: ObjathorAnnotation,
     options: ObjathorOptions | None = None,
-) -> Any:
+) -> ImportedAsset:
     """Build the asset bundle of one objathor asset (nothing is written to disk).
 
-    Returns an :class:`asset_pipeline.importer.ImportedAsset` whose report says what was done.
+    Returns an :class:`~asset_pipeline.import_records.ImportedAsset` whose report says what
+    was done.
     """
-    from asset_pipeline import annotate, physical
-    from asset_pipeline.decompose import decompose
-    from asset_pipeline.hulls import collision_records, postprocess
-    from asset_pipeline.import_records import ImportedAsset, visual_records
-    from asset_pipeline.normalise import normalise
-    from asset_pipeline.proximity import MeshProximity
-    from asset_pipeline.repair import repair
-    from asset_pipeline.surfaces import support_surfaces
-
     options = options or ObjathorOptions()
     where = str(mesh.source)
-    if not ID_PATTERN.match(uid):
-        raise SpecError(
-            f"invalid asset id {uid!r}",
-            where=where,
-            fix="uids become asset ids: letters, digits and _ . : | + - (not starting with a "
-            "symbol)",
-        )
-    timings: dict[str, float] = {}
-    clock = time.perf_counter()
-
-    def lap(name: str) -> None:
-        nonlocal clock
-        now = time.perf_counter()
-        timings[name] = round(now - clock, 3)
-        clock = now
-
+    check_asset_id(uid, where, fix="uids become asset ids: " + ID_FIX.removeprefix("use "))
+    timer = StepTimer()
     warnings = list(annotation.warnings) + list(mesh.warnings)
+    turned = _turned(mesh, annotation, warnings)
+    timer.lap("normalise_repair")
+    hulls = _hulls(turned, mesh, options, warnings)
+    timer.lap("decompose")
+    repaired = turned.repaired
+    proximity = MeshProximity(repaired.physics)
+    hullset = postprocess(hulls.hulls, repaired.physics, proximity, repaired.watertight)
+    timer.lap("hulls")
+    receptacle, receptacle_source = _receptacle(annotation, mesh)
+    surfaces = [] if receptacle is False else support_surfaces(repaired.physics)
+    timer.lap("surfaces")
+
+    files: dict[str, bytes] = {}
+    geometry = mesh_geometry(repaired.visuals, hullset, surfaces, files)
+    category, category_source = _category(annotation)
+    info = physical.category_info(category, turned.frame.size)
+    massed = physical.resolve_mass(info, repaired.physics, hullset.volume, given=annotation.mass_kg)
+    warnings += massed.warnings
+    size_check = _size_check(turned.frame.size, annotation)
+    if size_check.get("warning"):
+        warnings.append(f"{uid}: {size_check['warning']}")
+    derived = derived_meta(
+        asset_id=uid,
+        category=category,
+        description=annotation.description or annotate.describe(category),
+        size=turned.frame.size,
+        mass_kg=massed.mass_kg,
+        density_kg_m3=massed.mass_kg / hullset.volume,
+        info=info,
+        placement=annotation.placement or info.placement,
+        geometry=geometry,
+        source=f"objathor {uid} ({mesh.source.name}, {mesh.format}, front +z -> +x, "
+        f"yRotOffset {mesh.y_rot_offset_deg:g} deg)",
+    )
+    derived |= {"license": annotation.license, "attribution": annotation.attribution}
+    meta, _ = annotate.build_meta(derived, {}, {}, where)
+    timer.lap("annotate")
+    report = {
+        "asset_id": uid,
+        "source": _source_report(uid, mesh),
+        "objathor": {
+            "annotation": annotation.as_report(),
+            "y_rot_offset_deg": mesh.y_rot_offset_deg,
+            "receptacle": receptacle,
+            "receptacle_source": receptacle_source,
+            "category_source": category_source,
+            "size_check": size_check,
+        },
+        "normalisation": turned.frame.as_report()
+        | {"matrix": turned.matrix.round(9).tolist(), "scale": turned.scale},
+        "repairs": repaired.stats,
+        "watertight": repaired.watertight,
+        "winding_consistent": repaired.winding_consistent,
+        "degraded": hulls.degraded_reason is not None,
+        "degraded_reason": hulls.degraded_reason,
+        "decomposition": hulls.as_report(options.colliders),
+        "quality": hullset.quality,
+        "surfaces": surface_summary(surfaces),
+        "physical": _physical_report(meta, info, massed, annotation, category_source),
+        "files": file_sizes(files),
+        "timings_s": timer.timings,
+        "warnings": warnings,
+    }
+    return ImportedAsset(bundle=AssetBundle(meta=meta, files=files), report=report)
+
+
+def _receptacle(
+    annotation: ObjathorAnnotation, mesh: ObjathorMesh
+) -> tuple[bool | None, str | None]:
+    """Whether the asset holds things on it, and who says so: the annotation, else the mesh
+    file's ``receptacleCandidate``, else nobody (None: its surfaces are kept)."""
+    if annotation.receptacle is not None:
+        return annotation.receptacle, "annotation"
+    if mesh.receptacle_candidate is not None:
+        return mesh.receptacle_candidate, "receptacleCandidate"
+    return None, None
+
+
+def _source_report(uid: str, mesh: ObjathorMesh) -> dict[str, Any]:
+    """The report's section on the files read."""
+    return {
+        "file": str(mesh.source),
+        "sha256": source_digest(mesh.source),
+        "format": f"objathor-{mesh.format}",
+        "uid": uid,
+        "texture": str(mesh.texture) if mesh.texture else None,
+        "vertices": sum(len(p.vertices) for p in mesh.parts),
+        "faces": sum(len(p.faces) for p in mesh.parts),
+        "shipped_colliders": len(mesh.colliders) if mesh.colliders else 0,
+    }
+
+
+def _physical_report(
+    meta: AssetMeta,
+    info: CategoryInfo,
+    massed: MassResult,
+    annotation: ObjathorAnnotation,
+    category_source: str,
+) -> dict[str, Any]:
+    """The report's section on the category, the mass and how it was found."""
+    return {
+        "category": meta.category,
+        "category_source": category_source,
+        "category_known": info.known,
+        "mass_kg": meta.mass,
+        "mass_source": "annotation" if annotation.mass_kg is not None else massed.source,
+        "mass_range_kg": list(info.mass_range_kg),
+        "mass_derivation": massed.derivation,
+        "friction": meta.friction,
+        "placement": meta.placement,
+    }
+
+
+@dataclass(frozen=True)
+class _Turned:
+    """An objathor mesh in the asset frame, repaired: the transform from its own frame
+    (``matrix`` and ``scale``), then the normalisation."""
+
+    matrix: np.ndarray
+    scale: float
+    frame: Normalisation
+    repaired: Repaired
+
+
+def _turned(mesh: ObjathorMesh, annotation: ObjathorAnnotation, warnings: list[str]) -> _Turned:
+    """``mesh`` turned from its frame (Unity's or glTF's) into the asset frame (a mirroring
+    transform re-winds the faces), normalised and repaired."""
+    from asset_pipeline.normalise import normalise
+    from asset_pipeline.repair import repair
+
+    where = str(mesh.source)
     if mesh.frame == "gltf":
         matrix, scale = gltf_to_asset(mesh.parts, annotation)
         if annotation.scale_m is None:
@@ -142,128 +263,59 @@ def import_objathor_asset(
     repaired = repair(parts)
     if len(repaired.physics.faces) == 0:
         raise FormatError("the mesh has only degenerate faces", where=where)
-    lap("normalise_repair")
+    return _Turned(matrix, scale, frame, repaired)
 
-    manifold = repaired.watertight and repaired.winding_consistent
-    proximity = MeshProximity(repaired.physics)
-    shipped = None
+
+@dataclass(frozen=True)
+class _Hulls:
+    """The raw collision hulls of an asset and how they were made."""
+
+    hulls: list[np.ndarray]
+    method: str
+    degraded_reason: str | None
+    attempts: list[dict[str, Any]]
+    preprocess: str
+
+    def as_report(self, colliders_option: str) -> dict[str, Any]:
+        """The report's section on how the hulls were made."""
+        return {
+            "method": self.method,
+            "colliders_option": colliders_option,
+            "preprocess_mode": self.preprocess,
+            "attempts": self.attempts,
+        }
+
+
+def _hulls(
+    turned: _Turned, mesh: ObjathorMesh, options: ObjathorOptions, warnings: list[str]
+) -> _Hulls:
+    """The asset's shipped colliders (in the asset frame) when asked and there, else CoACD's
+    decomposition of the repaired mesh."""
+    from asset_pipeline.decompose import decompose
+
+    where = str(mesh.source)
     if options.colliders == "shipped":
         if mesh.colliders:
-            shipped = [(c @ matrix.T) * scale + frame.translation for c in mesh.colliders]
-        else:
-            warnings.append(f"{where}: no shipped colliders; decomposed with CoACD instead")
-    if shipped is not None:
-        raw_hulls = shipped
-        method, degraded_reason, attempts, preprocess = "shipped", None, [], "none"
-    else:
-        decomposition = decompose(repaired.physics, options.coacd, manifold)
-        raw_hulls = decomposition.hulls
-        method, degraded_reason = decomposition.method, decomposition.degraded_reason
-        attempts, preprocess = decomposition.attempts, decomposition.preprocess_mode
-        if degraded_reason:
-            warnings.append(f"degraded decomposition: {degraded_reason}")
-    lap("decompose")
-    hullset = postprocess(raw_hulls, repaired.physics, proximity, repaired.watertight)
-    lap("hulls")
-
-    receptacle = annotation.receptacle
-    receptacle_source = "annotation" if receptacle is not None else None
-    if receptacle is None and mesh.receptacle_candidate is not None:
-        receptacle, receptacle_source = mesh.receptacle_candidate, "receptacleCandidate"
-    surfaces = [] if receptacle is False else support_surfaces(repaired.physics)
-    lap("surfaces")
-
-    files: dict[str, bytes] = {}
-    visual = visual_records(repaired.visuals, files, {})
-    collision = collision_records(hullset.colliders, files)
-    volume = hullset.volume
-
-    category, category_source = _category(annotation, physical)
-    info = physical.category_info(category, frame.size)
-    massed = physical.resolve_mass(info, repaired.physics, volume, given=annotation.mass_kg)
-    warnings += massed.warnings
-    placement = list(annotation.placement) if annotation.placement else list(info.placement)
-    size_check = _size_check(frame.size, annotation)
-    if size_check.get("warning"):
-        warnings.append(f"{uid}: {size_check['warning']}")
-    derived = {
-        "id": uid,
-        "category": category,
-        "description": annotation.description or annotate.describe(category),
-        "size": list(frame.size),
-        "mass_kg": massed.mass_kg,
-        "density_kg_m3": massed.mass_kg / volume,
-        "friction": info.friction,
-        "placement": placement,
-        "upright": info.upright,
-        "front": "+x",
-        "visual": visual,
-        "collision": collision,
-        "maxhullvert": hullset.maxhullvert,
-        "surfaces": [
-            {"height": s.height, "polygon": [list(p) for p in s.polygon], "area_m2": s.area}
-            for s in surfaces
-        ],
-        "source": f"objathor {uid} ({mesh.source.name}, {mesh.format}, front +z -> +x, "
-        f"yRotOffset {mesh.y_rot_offset_deg:g} deg)",
-        "license": annotation.license,
-        "attribution": annotation.attribution,
-    }
-    meta, _ = annotate.build_meta(derived, {}, {}, where)
-    lap("annotate")
-    report = {
-        "asset_id": uid,
-        "source": {
-            "file": str(mesh.source),
-            "sha256": hashlib.sha256(mesh.source.read_bytes()).hexdigest(),
-            "format": f"objathor-{mesh.format}",
-            "uid": uid,
-            "texture": str(mesh.texture) if mesh.texture else None,
-            "vertices": sum(len(p.vertices) for p in mesh.parts),
-            "faces": sum(len(p.faces) for p in mesh.parts),
-            "shipped_colliders": len(mesh.colliders) if mesh.colliders else 0,
-        },
-        "objathor": {
-            "annotation": annotation.as_report(),
-            "y_rot_offset_deg": mesh.y_rot_offset_deg,
-            "receptacle": receptacle,
-            "receptacle_source": receptacle_source,
-            "category_source": category_source,
-            "size_check": size_check,
-        },
-        "normalisation": frame.as_report() | {"matrix": matrix.round(9).tolist(), "scale": scale},
-        "repairs": repaired.stats,
-        "watertight": repaired.watertight,
-        "winding_consistent": repaired.winding_consistent,
-        "degraded": degraded_reason is not None,
-        "degraded_reason": degraded_reason,
-        "decomposition": {
-            "method": method,
-            "colliders_option": options.colliders,
-            "preprocess_mode": preprocess,
-            "attempts": attempts,
-        },
-        "quality": hullset.quality,
-        "surfaces": [{"height": s.height, "area_m2": s.area} for s in surfaces],
-        "physical": {
-            "category": meta.category,
-            "category_source": category_source,
-            "category_known": info.known,
-            "mass_kg": meta.mass,
-            "mass_source": "annotation" if annotation.mass_kg is not None else massed.source,
-            "mass_range_kg": list(info.mass_range_kg),
-            "mass_derivation": massed.derivation,
-            "friction": meta.friction,
-            "placement": meta.placement,
-        },
-        "files": {name: len(data) for name, data in sorted(files.items())},
-        "timings_s": timings,
-        "warnings": warnings,
-    }
-    return ImportedAsset(bundle=AssetBundle(meta=meta, files=files), report=report)
+            matrix, scale = turned.matrix, turned.scale
+            translation = turned.frame.translation
+            shipped = [(c @ matrix.T) * scale + translation for c in mesh.colliders]
+            return _Hulls(shipped, "shipped", None, [], "none")
+        warnings.append(f"{where}: no shipped colliders; decomposed with CoACD instead")
+    repaired = turned.repaired
+    manifold = repaired.watertight and repaired.winding_consistent
+    decomposition = decompose(repaired.physics, options.coacd, manifold)
+    if decomposition.degraded_reason:
+        warnings.append(f"degraded decomposition: {decomposition.degraded_reason}")
+    return _Hulls(
+        decomposition.hulls,
+        decomposition.method,
+        decomposition.degraded_reason,
+        decomposition.attempts,
+        decomposition.preprocess_mode,
+    )
 
 
-def _category(annotation: ObjathorAnnotation, physical: Any) -> tuple[str, str]:
+def _category(annotation: ObjathorAnnotation) -> tuple[str, str]:
     """(holomj category, where it came from): a table category named in the annotation's
     category or synset, else the annotation's category in snake case, else the default."""
     texts = [("category", annotation.category)]
@@ -310,7 +362,7 @@ def cache_key(job: ObjathorJob, options: ObjathorOptions) -> str:
     digest = hashlib.sha256()
     digest.update(pipeline_version().encode())
     digest.update(b"objathor")
-    digest.update(json.dumps(_jsonable(options), sort_keys=True).encode())
+    digest.update(options_json(options).encode())
     digest.update(job.uid.encode())
     digest.update(json.dumps(job.annotation, sort_keys=True, default=str).encode())
     for path in sorted(job.folder.iterdir()):
@@ -318,12 +370,6 @@ def cache_key(job: ObjathorJob, options: ObjathorOptions) -> str:
             digest.update(path.name.encode())
             digest.update(hashlib.sha256(path.read_bytes()).digest())
     return digest.hexdigest()[:32]
-
-
-def _jsonable(value: Any) -> Any:
-    if dataclasses.is_dataclass(value):
-        return {f.name: _jsonable(getattr(value, f.name)) for f in dataclasses.fields(value)}
-    return value
 
 
 def process_objathor_job(

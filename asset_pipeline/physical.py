@@ -35,6 +35,7 @@ import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
 from asset_pipeline.decompose import bodies
+from holomj.spec.categories import normalise_category
 
 SMALL_OBJECT_M = 0.6
 DEFAULT_CATEGORY = "object"
@@ -116,9 +117,9 @@ def materials() -> list[str]:
 
 def category_info(name: str, size: tuple[float, float, float] | None = None) -> CategoryInfo:
     """The table's entry for ``name`` (case and separators ignored), else the default."""
-    key = _key(name)
+    key = normalise_category(name)
     for category, row in _table()["categories"].items():
-        if _key(category) == key:
+        if normalise_category(category) == key:
             return _info(category, row, known=True, placement=tuple(row["placement"]))
     row = _table()["default"]
     small = size is None or max(size) < SMALL_OBJECT_M
@@ -136,7 +137,7 @@ def _info(name: str, row: dict, known: bool, placement: tuple[str, ...]) -> Cate
         friction=row["friction"],
         placement=placement,
         upright=row["upright"],
-        mass_range_kg=tuple(row["mass_range_kg"]),  # type: ignore[arg-type]
+        mass_range_kg=tuple(row["mass_range_kg"]),
     )
 
 
@@ -336,10 +337,6 @@ def resolve_mass(
         )
     record.update(mass_kg=mass, source=source)
     return MassResult(mass_kg=mass, source=source, derivation=record, warnings=warnings)
-
-
-def _key(name: str) -> str:
-    return "".join(ch for ch in name.lower() if ch.isalnum())
 
 
 def _words(text: str) -> list[str]:

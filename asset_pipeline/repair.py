@@ -53,21 +53,7 @@ def repair(parts: list[Part]) -> Repaired:
     for part in parts:
         groups.setdefault(part.material.key, []).append(part)
     group_list = list(groups.values())
-    vertices, faces, face_group, uv = [], [], [], []
-    offset = 0
-    for g, members in enumerate(group_list):
-        textured = members[0].material.texture_png is not None
-        for part in members:
-            vertices.append(part.vertices)
-            faces.append(part.faces + offset)
-            face_group.append(np.full(len(part.faces), g))
-            has_uv = textured and part.uv is not None
-            uv.append(part.uv if has_uv else np.zeros((len(part.vertices), 2)))
-            offset += len(part.vertices)
-    all_v = np.concatenate(vertices)
-    all_f = np.concatenate(faces)
-    all_g = np.concatenate(face_group)
-    all_uv = np.concatenate(uv)
+    all_v, all_f, all_g, all_uv = _stacked(group_list)
 
     grid = np.round(all_v / WELD_M).astype(np.int64)
     _, first, weld = np.unique(grid, axis=0, return_index=True, return_inverse=True)
@@ -123,6 +109,35 @@ def repair(parts: list[Part]) -> Repaired:
         watertight=bool(physics.is_watertight),
         winding_consistent=bool(physics.is_winding_consistent),
         stats=stats,
+    )
+
+
+def _stacked(
+    group_list: list[list[Part]],
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """All parts' vertices, faces (indices into them), each face's material group and each
+    vertex's texture coordinates (zeros where its material is untextured) in one array each."""
+    vertices: list[np.ndarray] = []
+    faces: list[np.ndarray] = []
+    face_group: list[np.ndarray] = []
+    uv: list[np.ndarray] = []
+    offset = 0
+    for g, members in enumerate(group_list):
+        textured = members[0].material.texture_png is not None
+        for part in members:
+            vertices.append(part.vertices)
+            faces.append(part.faces + offset)
+            face_group.append(np.full(len(part.faces), g))
+            if textured and part.uv is not None:
+                uv.append(part.uv)
+            else:
+                uv.append(np.zeros((len(part.vertices), 2)))
+            offset += len(part.vertices)
+    return (
+        np.concatenate(vertices),
+        np.concatenate(faces),
+        np.concatenate(face_group),
+        np.concatenate(uv),
     )
 
 

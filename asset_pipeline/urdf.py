@@ -41,106 +41,28 @@ meshes are in, which is usually, but not always, inside the limits.
 
 from __future__ import annotations
 
-import json
 import math
-import re
-import xml.parsers.expat
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from asset_pipeline.kinematics import (
-    JointInfo,
-    Kinematics,
-    LinkGeometry,
-    coloured,
-    primitive,
-    transformed,
+from asset_pipeline.load import FORMATS
+from asset_pipeline.xml_tree import (
+    Node,
+    attr_float,
+    attr_floats,
+    attr_vec3,
+    origin_transform,
+    parse_xml,
+    positive_sizes,
+    read_text,
 )
-from asset_pipeline.load import FORMATS, LoadedFile, load_file
 from holomj.errors import FormatError
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed")
 REFUSED_TYPES = ("floating", "planar")
 PACKAGE_LEVELS = 3
-MAX_FILE_BYTES = 50_000_000
-
-
-# --- a small XML tree with line numbers (the stdlib's expat parser) -----------------------------
-@dataclass
-class Node:
-    """An XML element: tag, attributes, children and the line it starts on."""
-
-    tag: str
-    attrib: dict[str, str]
-    line: int
-    children: list[Node] = field(default_factory=list)
-
-    def find(self, tag: str) -> Node | None:
-        """The first child with ``tag``."""
-        return next((c for c in self.children if c.tag == tag), None)
-
-    def findall(self, tag: str) -> list[Node]:
-        """Every child with ``tag``."""
-        return [c for c in self.children if c.tag == tag]
-
-    def iter(self):
-        """This element and all below it, depth first."""
-        yield self
-        for child in self.children:
-            yield from child.iter()
-
-
-def parse_xml(data: bytes | str, where: str) -> Node:
-    """The root element of ``data``; FormatError for anything that is not plain XML.
-
-    DOCTYPE declarations (and with them entity definitions) are refused.
-    """
-    parser = xml.parsers.expat.ParserCreate()
-    stack: list[Node] = []
-    roots: list[Node] = []
-
-    def start(tag: str, attrib: dict[str, str]) -> None:
-        node = Node(tag, dict(attrib), parser.CurrentLineNumber)
-        if stack:
-            stack[-1].children.append(node)
-        else:
-            roots.append(node)
-        stack.append(node)
-
-    def end(tag: str) -> None:
-        stack.pop()
-
-    def doctype(*args: object) -> None:
-        raise FormatError("a DOCTYPE declaration is not allowed", where=where)
-
-    parser.StartElementHandler = start
-    parser.EndElementHandler = end
-    parser.StartDoctypeDeclHandler = doctype
-    try:
-        parser.Parse(data, True)
-    except xml.parsers.expat.ExpatError as err:
-        reason = xml.parsers.expat.ErrorString(err.code)
-        raise FormatError(
-            f"not well-formed XML: {reason} at line {err.lineno}", where=where
-        ) from None
-    if not roots:
-        raise FormatError("the file holds no XML element", where=where)
-    return roots[0]
-
-
-def read_text(path: Path) -> bytes:
-    """The bytes of a description file; FormatError when missing, empty or huge."""
-    where = str(path)
-    if not path.is_file():
-        raise FormatError("file not found", where=where, fix="check the path")
-    size = path.stat().st_size
-    if size == 0:
-        raise FormatError("the file is empty", where=where)
-    if size > MAX_FILE_BYTES:
-        raise FormatError(f"the file has {size} bytes, more than {MAX_FILE_BYTES}", where=where)
-    return path.read_bytes()
 
 
 # --- the URDF model ---------------------------------------------------------------------------
@@ -199,7 +121,7 @@ class UrdfModel:
     def files(self) -> list[Path]:
         """Every mesh file it names, once, in order."""
         seen = [g.mesh for link in self.links.values() for g in link.geometry if g.mesh]
-        return list(dict.fromkeys(seen))  # type: ignore[arg-type]
+        return list(dict.fromkeys(seen))
 
 
 def read_urdf(path: Path | str) -> UrdfModel:
@@ -312,7 +234,7 @@ def _link(node: Node, name: str, path: Path, materials: dict, warnings: list[str
         shape = element.find("geometry")
         if shape is None or not shape.children:
             raise FormatError(f"{what} has no <geometry>", where=where)
-        origin = _origin(element.find("origin"), what, where)
+        origin = origin_transform(element.find("origin"), what, where)
         rgba = None
         material = element.find("material")
         if material is not None:
@@ -332,21 +254,25 @@ def _geometry(
         if not filename:
             raise FormatError(f"{what}: <mesh> (line {node.line}) has no filename", where=where)
         mesh = resolve_mesh(filename, path.parent, f"{what}: mesh {filename!r}", where)
-        scale = _floats(node, "scale", 3, what, where, default=(1.0, 1.0, 1.0))
+        scale = attr_vec3(node, "scale", what, where, default=(1.0, 1.0, 1.0))
         if any(s == 0 for s in scale):
             raise FormatError(f"{what}: mesh scale {scale} has a zero factor", where=where)
         return Geometry("mesh", origin, mesh=mesh, scale=scale, rgba=rgba, where=what)
     if node.tag == "box":
-        size = _floats(node, "size", 3, what, where)
-        return Geometry("box", origin, size=_positive(size, what, where), rgba=rgba, where=what)
-    if node.tag == "cylinder":
-        size = (_float(node, "radius", what, where), _float(node, "length", what, where))
+        size = attr_floats(node, "size", 3, what, where)
         return Geometry(
-            "cylinder", origin, size=_positive(size, what, where), rgba=rgba, where=what
+            "box", origin, size=positive_sizes(size, what, where), rgba=rgba, where=what
+        )
+    if node.tag == "cylinder":
+        size = (attr_float(node, "radius", what, where), attr_float(node, "length", what, where))
+        return Geometry(
+            "cylinder", origin, size=positive_sizes(size, what, where), rgba=rgba, where=what
         )
     if node.tag == "sphere":
-        size = (_float(node, "radius", what, where),)
-        return Geometry("sphere", origin, size=_positive(size, what, where), rgba=rgba, where=what)
+        size = (attr_float(node, "radius", what, where),)
+        return Geometry(
+            "sphere", origin, size=positive_sizes(size, what, where), rgba=rgba, where=what
+        )
     raise FormatError(
         f"{what}: unknown geometry <{node.tag}> (line {node.line})",
         where=where,
@@ -404,10 +330,10 @@ def _joint(node: Node, links: dict, where: str, warnings: list[str]) -> UrdfJoin
         raise FormatError(
             f"{label}: joints form a cycle ({ends['parent']!r} is its own parent)", where=where
         )
-    origin = _origin(node.find("origin"), label, where)
+    origin = origin_transform(node.find("origin"), label, where)
     axis_node = node.find("axis")
     axis = np.array(
-        _floats(axis_node, "xyz", 3, label, where, default=(1.0, 0.0, 0.0))
+        attr_floats(axis_node, "xyz", 3, label, where, default=(1.0, 0.0, 0.0))
         if axis_node is not None
         else (1.0, 0.0, 0.0)
     )
@@ -420,8 +346,8 @@ def _joint(node: Node, links: dict, where: str, warnings: list[str]) -> UrdfJoin
         if element is None:
             raise FormatError(f"{label}: a {kind} joint needs <limit lower upper>", where=where)
         what = f"{label} <limit> (line {element.line})"
-        lower = _float(element, "lower", what, where, default=0.0)
-        upper = _float(element, "upper", what, where, default=0.0)
+        lower = attr_float(element, "lower", what, where, default=0.0)
+        upper = attr_float(element, "upper", what, where, default=0.0)
         if not lower < upper:
             raise FormatError(f"{what}: empty range [{lower:g}, {upper:g}]", where=where)
         if kind == "revolute" and upper - lower > 2 * math.pi + 1e-9:
@@ -435,8 +361,8 @@ def _joint(node: Node, links: dict, where: str, warnings: list[str]) -> UrdfJoin
     dynamics = node.find("dynamics")
     if dynamics is not None:
         what = f"{label} <dynamics> (line {dynamics.line})"
-        damping = _float(dynamics, "damping", what, where, default=0.0)
-        friction = _float(dynamics, "friction", what, where, default=0.0)
+        damping = attr_float(dynamics, "damping", what, where, default=0.0)
+        friction = attr_float(dynamics, "friction", what, where, default=0.0)
         if damping < 0 or friction < 0:
             raise FormatError(f"{what}: damping and friction must not be negative", where=where)
     if node.find("mimic") is not None:
@@ -446,202 +372,10 @@ def _joint(node: Node, links: dict, where: str, warnings: list[str]) -> UrdfJoin
     )
 
 
-def _origin(node: Node | None, what: str, where: str) -> np.ndarray:
-    """The 4x4 transform of an ``<origin xyz rpy>`` (identity when absent)."""
-    transform = np.eye(4)
-    if node is None:
-        return transform
-    what = f"{what} <origin> (line {node.line})"
-    xyz = _floats(node, "xyz", 3, what, where, default=(0.0, 0.0, 0.0))
-    rpy = _floats(node, "rpy", 3, what, where, default=(0.0, 0.0, 0.0))
-    transform[:3, :3] = rpy_matrix(rpy)
-    transform[:3, 3] = xyz
-    return transform
-
-
-def rpy_matrix(rpy: tuple[float, float, float]) -> np.ndarray:
-    """URDF's roll-pitch-yaw: ``Rz(yaw) @ Ry(pitch) @ Rx(roll)``."""
-    r, p, y = rpy
-    cr, sr, cp, sp, cy, sy = (
-        math.cos(r),
-        math.sin(r),
-        math.cos(p),
-        math.sin(p),
-        math.cos(y),
-        math.sin(y),
-    )
-    rx = np.array([[1, 0, 0], [0, cr, -sr], [0, sr, cr]])
-    ry = np.array([[cp, 0, sp], [0, 1, 0], [-sp, 0, cp]])
-    rz = np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]])
-    return rz @ ry @ rx
-
-
-_NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
-
-
-def _floats(
-    node: Node,
-    key: str,
-    count: int,
-    what: str,
-    where: str,
-    default: tuple[float, ...] | None = None,
-) -> tuple[float, ...]:
-    text = node.attrib.get(key)
-    if text is None:
-        if default is None:
-            raise FormatError(f"{what}: <{node.tag}> (line {node.line}) has no {key}", where=where)
-        return default
-    items = text.split()
-    if len(items) != count or not all(_NUMBER.match(item) for item in items):
-        raise FormatError(
-            f"{what}: {key}={text[:40]!r} of <{node.tag}> (line {node.line}) is not "
-            f"{count} number{'s' if count > 1 else ''}",
-            where=where,
-        )
-    values = tuple(float(item) for item in items)
-    if not all(math.isfinite(v) for v in values):
-        raise FormatError(f"{what}: {key} of <{node.tag}> is not finite", where=where)
-    return values
-
-
-def _float(node: Node, key: str, what: str, where: str, default: float | None = None) -> float:
-    return _floats(node, key, 1, what, where, None if default is None else (default,))[0]
-
-
-def _positive(values: tuple[float, ...], what: str, where: str) -> tuple[float, ...]:
-    if any(v <= 0 for v in values):
-        raise FormatError(f"{what}: sizes must be positive, got {values}", where=where)
-    return values
-
-
 def _colour(node: Node, where: str) -> tuple[float, float, float, float] | None:
     colour = node.find("color")
     if colour is None:
         return None
-    values = _floats(colour, "rgba", 4, f"material (line {node.line})", where)
-    return tuple(min(max(v, 0.0), 1.0) for v in values)  # type: ignore[return-value]
-
-
-# --- PartNet-Mobility extras --------------------------------------------------------------------
-def partnet_meta(path: Path) -> dict:
-    """``meta.json`` beside a PartNet-Mobility URDF (empty when absent or unreadable)."""
-    meta = Path(path).parent / "meta.json"
-    try:
-        data = json.loads(meta.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return {}
-    return data if isinstance(data, dict) else {}
-
-
-def partnet_labels(path: Path) -> dict[str, str]:
-    """Link -> semantic label from ``semantics.txt`` (``link_0 hinge door``), if present."""
-    labels = {}
-    try:
-        text = (Path(path).parent / "semantics.txt").read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError):
-        return {}
-    for line in text.splitlines():
-        words = line.split()
-        if len(words) >= 2:
-            labels[words[0]] = words[-1].lower()
-    return labels
-
-
-def is_partnet(model: UrdfModel) -> bool:
-    """Whether the URDF looks like PartNet-Mobility's (its meta.json or its robot name)."""
-    return bool(partnet_meta(model.path).get("model_cat")) or model.name.startswith("partnet_")
-
-
-def asset_id_hint(path: Path) -> str | None:
-    """An id for a PartNet-Mobility ``mobility.urdf``: ``<model_cat>_<folder>`` (e.g.
-    ``storagefurniture_45612``); None for other files."""
-    path = Path(path)
-    if path.suffix.lower() != ".urdf" or not path.stem.lower().startswith("mobility"):
-        return None
-    category = str(partnet_meta(path).get("model_cat") or "partnet")
-    folder = re.sub(r"[^A-Za-z0-9_.\-]+", "_", path.parent.name).strip("_.-")
-    text = re.sub(r"[^a-z0-9_]+", "_", category.lower()).strip("_") or "partnet"
-    return f"{text}_{folder}" if folder else text
-
-
-# --- to kinematics ------------------------------------------------------------------------------
-_JOINT_KINDS = {"revolute": "hinge", "continuous": "hinge", "prismatic": "slide", "fixed": "fixed"}
-
-
-def load_urdf(path: Path | str, max_faces: int = 2_000_000) -> Kinematics:
-    """The kinematics of the URDF at ``path``: its meshes loaded and placed at joint values 0."""
-    model = read_urdf(path)
-    frames = {root: np.eye(4) for root in model.roots}
-    joints = []
-    for joint in model.joints:
-        at = frames[joint.parent] @ joint.origin
-        frames[joint.child] = at
-        joints.append(
-            JointInfo(
-                name=joint.name,
-                type=_JOINT_KINDS[joint.type],  # type: ignore[arg-type]
-                parent=joint.parent,
-                child=joint.child,
-                axis=at[:3, :3] @ joint.axis,
-                anchor=at[:3, 3].copy(),
-                range=joint.limit,
-                damping=joint.damping,
-                frictionloss=joint.friction,
-                where=joint.where,
-            )
-        )
-    warnings = list(model.warnings)
-    loaded: dict[Path, LoadedFile] = {}
-    links: dict[str, LinkGeometry] = {}
-    faces = 0
-    for name in [*model.roots, *(j.child for j in model.joints)]:
-        link = model.links[name]
-        parts = []
-        for geometry in link.geometry:
-            placed = frames[name] @ geometry.origin
-            if geometry.mesh is None:
-                parts.append(
-                    coloured(
-                        transformed(primitive(geometry.kind, geometry.size), placed), geometry.rgba
-                    )
-                )
-                continue
-            mesh = loaded.get(geometry.mesh)
-            if mesh is None:
-                mesh = _load_mesh(geometry, model.path, max_faces - faces)
-                loaded[geometry.mesh] = mesh
-                warnings += [f"{geometry.mesh.name}: {w}" for w in mesh.warnings]
-            scale = np.diag([*geometry.scale, 1.0])
-            for part in mesh.parts:
-                parts.append(coloured(transformed(part, placed @ scale), geometry.rgba))
-                faces += len(part.faces)
-        if faces > max_faces:
-            raise FormatError(
-                f"the meshes have more than {max_faces} faces",
-                where=str(model.path),
-                fix="decimate them first or raise max_faces",
-            )
-        links[name] = LinkGeometry(name, parts, link.where)
-    meta = partnet_meta(model.path)
-    return Kinematics(
-        format="urdf",
-        name=model.name,
-        links=links,
-        joints=joints,
-        up_axis="z",
-        labels=partnet_labels(model.path),
-        category=str(meta["model_cat"]) if meta.get("model_cat") else None,
-        partnet=is_partnet(model),
-        warnings=warnings,
-    )
-
-
-def _load_mesh(geometry: Geometry, urdf: Path, max_faces: int) -> LoadedFile:
-    assert geometry.mesh is not None
-    try:
-        return load_file(geometry.mesh, max(1, max_faces))
-    except FormatError as err:
-        raise FormatError(
-            f"{geometry.where}: mesh {geometry.mesh.name}: {err.what}", where=str(urdf), fix=err.fix
-        ) from None
+    values = attr_floats(colour, "rgba", 4, f"material (line {node.line})", where)
+    r, g, b, a = (min(max(v, 0.0), 1.0) for v in values)
+    return (r, g, b, a)

@@ -47,60 +47,30 @@ def generate(
     prompt: str,
     out: Path | str,
     *,
-    seed: int = 0,
-    planner: Literal["offline", "llm"] = "offline",
     library: Path | str | AssetLibrary | None = None,
-    overwrite: bool = False,
-    render: bool = True,
-    width: int = 640,
-    height: int = 480,
-    furniture: Literal["free", "static"] = "free",
-    robot: str | None = None,
-    profile: Literal["default", "mjx"] = "default",
-    text_model: Path | None = None,
-    clip_weights: Path | None = None,
-    clip_model: str | None = None,
-    materials: Path | None = None,
-    llm_base_url: str | None = None,
-    llm_model: str | None = None,
-    llm_api_key: str | None = None,
-    llm_config: Path | None = None,
-    layout_time: float = 1.0,
     listener: Listener | None = None,
+    **options: Any,
 ) -> GenerateResult:
     """``holomj generate``: a prompt in, a validated scene folder ``out`` written.
 
+    ``options``: the fields of :class:`~holomj.jobs.generate_options.GenerateOptions`, by
+    keyword (``seed``, ``planner``, ``overwrite``, ``render``, ``width``, ``height``,
+    ``furniture``, ``robot``, ``profile``, ``layout_time``, ...); ``library``: a folder or an
+    :class:`AssetLibrary` (default: the default library, built on first use).
+
     Returns a :class:`~holomj.jobs.generate.GenerateResult` (``.folder``, ``.plan``,
     ``.report`` with ``.ok``, ``.record``, ``.timings``). Raises
-    :class:`~holomj.errors.InputError` for an empty or too long prompt or a bad option,
-    :class:`~holomj.errors.OutputExistsError` when ``out`` exists (without ``overwrite``), and
-    other :class:`~holomj.errors.HolomjError` types when a stage fails; a failed render is
-    recorded in the result (``.render_error``), not raised. ``listener(stage, message)`` sees
-    every line of the stage log as it happens.
+    :class:`~holomj.errors.InputError` for an empty or too long prompt or a bad or unknown
+    option, :class:`~holomj.errors.OutputExistsError` when ``out`` exists (without
+    ``overwrite``), and other :class:`~holomj.errors.HolomjError` types when a stage fails; a
+    failed render is recorded in the result (``.render_error``), not raised.
+    ``listener(stage, message)`` sees every line of the stage log as it happens.
     """
     from holomj.jobs.generate import GenerateOptions, generate_scene
 
-    options = GenerateOptions(
-        library=_library_root(library),
-        seed=seed,
-        planner=planner,
-        overwrite=overwrite,
-        render=render,
-        render_size=(width, height),
-        text_model=text_model,
-        clip_weights=clip_weights,
-        clip_model=clip_model,
-        materials=materials,
-        llm_base_url=llm_base_url,
-        llm_model=llm_model,
-        llm_api_key=llm_api_key,
-        llm_config=llm_config,
-        layout_time_s=layout_time,
-        furniture=furniture,
-        robot=robot,
-        profile=profile,
-    )
-    return generate_scene(prompt, Path(out), options, listener=listener)
+    root = library.root if isinstance(library, _StoreLibrary) else library
+    checked = GenerateOptions.from_keywords(library=None if root is None else Path(root), **options)
+    return generate_scene(prompt, Path(out), checked, listener=listener)
 
 
 def compile(

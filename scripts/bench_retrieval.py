@@ -48,8 +48,9 @@ import numpy as np
 from asset_pipeline.procedural import CATEGORIES
 from asset_pipeline.procedural.attributes import COLOURS, MATERIALS, STYLES
 from holomj.library.store import BUILTIN_BOX, AssetLibrary, LibraryAsset
-from holomj.retrieval.assets import AssetRetriever, asset_text, retriever_for
+from holomj.retrieval.assets import AssetRetriever, retriever_for
 from holomj.retrieval.cache import EmbeddingCache, cache_file, content_key
+from holomj.retrieval.scores import asset_text
 from holomj.retrieval.text import TextEncoder, text_encoder
 from holomj.spec.assets import AssetMeta
 

@@ -64,7 +64,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.layout": (
         "pure geometry: floor plans, doors/windows, furniture solver, wall objects",
-        _holomj("seeds spec library data"),
+        _holomj("spec data"),
     ),
     "holomj.retrieval": (
         "asset and material scoring (text, visual, size), embedding cache",
@@ -76,7 +76,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.compose": (
         "plan + assets -> SceneSpec: house shell, room furnishing, small objects, relation report",
-        _holomj("seeds spec library layout retrieval data"),
+        _holomj("seeds spec library layout data"),
     ),
     "holomj.importers": (
         "ProcTHOR/Holodeck house JSON and SceneDef -> SceneSpec",
@@ -88,7 +88,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.physics": (
         "penetration audit, settle, stability, repair, spawn-and-drop (in memory)",
-        _holomj("seeds spec library mjcf layout data"),
+        _holomj("spec library mjcf"),
     ),
     "holomj.robots": (
         "robot registry, preparation, floor spot, attaching (in memory)",
@@ -104,7 +104,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.formats": (
         "output formats in memory: objects.json, navigation map, summaries, GLB, USD, URDF",
-        _holomj("spec mjcf physics robots"),
+        _holomj("spec mjcf physics"),
     ),
     "holomj.edit": (
         "scene edit operations applied in memory (add, move, remove, replace, ...)",
@@ -115,16 +115,24 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
         "pointing",
         _holomj("spec plan evaluation"),
     ),
+    "holomj.tasks": (
+        "robot tasks: success predicates on MuJoCo state and objects.json, task proposals",
+        _holomj("spec"),
+    ),
     "holomj.jobs": (
         "one module per user-facing job; the output folder (atomic I/O)",
         (
             *_holomj(
                 "edit refinement atomic seeds data spec library layout retrieval plan compose"
             ),
-            *_holomj("importers mjcf physics robots rendering formats evaluation"),
+            *_holomj("importers mjcf physics robots rendering formats evaluation tasks"),
             *_asset_pipeline("default_library :importers library_writer procedural"),
             *_asset_pipeline("procedural.articulated"),
         ),
+    ),
+    "holomj.envs": (
+        "Gymnasium environments on scene folders: joint servo, task targets, scripted policy",
+        _holomj("spec tasks robots jobs"),
     ),
     "holomj.batch": (
         "many jobs on a local worker pool or Ray, resumable",
@@ -133,14 +141,11 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     "holomj.api": ("the Python API re-exported from holomj", _holomj("spec library jobs")),
     "holomj.cli": (
         "thin typer commands: parse options, call one job, print",
-        _holomj("api seeds spec jobs batch importers"),  # importers: the formats, for --format
+        _holomj("seeds spec jobs batch importers"),  # importers: the formats, for --format
     ),
     "holomj.__main__": ("python -m holomj", _holomj("cli")),
     "holomj": ("the package root: version and the lazy API", _holomj("api")),
-    "asset_pipeline": (
-        "the package root (loads holomj first), the category data file",
-        ("holomj",),
-    ),
+    "asset_pipeline": ("the package root, the category data file", ()),
     "asset_pipeline:mesh": (
         "one mesh -> simulation-ready parts: load, frame, repair, CoACD, hulls, surfaces, mass",
         (*_holomj("spec"), "asset_pipeline"),
@@ -173,7 +178,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
         "parametric furniture, fixtures and small objects: parts, assembly, OBJ files",
         (
             *_holomj("spec mjcf"),
-            *_asset_pipeline("library_writer collider_audit procedural.articulated"),
+            *_asset_pipeline("library_writer collider_audit"),
         ),
     ),
     "asset_pipeline.procedural.articulated": (
@@ -193,13 +198,17 @@ GROUPS: dict[str, tuple[str, ...]] = {
     "asset_pipeline:mesh": _asset_pipeline(
         "load normalise repair decompose hulls objfile proximity surfaces physical annotate handles"
     ),
-    "asset_pipeline:articulated_files": _asset_pipeline("kinematics urdf mjcf_import"),
+    "asset_pipeline:articulated_files": _asset_pipeline(
+        "kinematics xml_tree urdf urdf_kinematics mjcf_import"
+    ),
     "asset_pipeline:importers": _asset_pipeline(
-        "import_records importer articulated_import manage objathor objathor_import"
+        "import_records importer articulated_import articulated_bodies articulated_joints "
+        "articulated_surfaces import_cache import_plan manage objathor objathor_files "
+        "objathor_annotation objathor_mesh objathor_import"
     ),
 }
 # packages in the map before their first module exists: their imports are not held to be used
-PLANNED = ("holomj.compose",)
+PLANNED: tuple[str, ...] = ()
 # (importer, imported): a package under the first may import one under the second only inside
 # functions (``import holomj`` stays light: no CoACD, trimesh or procedural generators)
 LAZY_ONLY = (("holomj", "asset_pipeline"),)

@@ -17,14 +17,8 @@ import numpy as np
 
 from asset_pipeline.library_writer import write_library
 from asset_pipeline.procedural.assembly import AssetDesign, assemble
-from asset_pipeline.procedural.catalog import default_assets, default_variants
-from asset_pipeline.procedural.registry import (
-    CATEGORIES,
-    CategoryInfo,
-    Design,
-    category_info,
-    generate_asset,
-)
+from asset_pipeline.procedural.catalog import default_assets, default_variants, generate_asset
+from asset_pipeline.procedural.registry import CATEGORIES, CategoryInfo, Design, category_info
 from holomj.spec.assets import ASSET_SCHEMA_VERSION
 
 

@@ -29,13 +29,21 @@ import numpy as np
 
 from asset_pipeline.collider_audit import ColliderGap, collider_gap, mesh_gaps, round_gap
 from asset_pipeline.library_writer import AssetBundle
+from asset_pipeline.procedural.asset_records import (
+    LICENSE,
+    SOURCE,
+    check_clearance,
+    check_inside,
+    collision_record,
+    meta_round,
+    surface_record,
+)
 from asset_pipeline.procedural.obj_writer import merge_meshes, obj_bytes, rounded
 from asset_pipeline.procedural.parts import (
     Collider,
     Material,
     Mesh,
     Part,
-    Surface,
     Vec3,
     hull_collider,
 )
@@ -46,12 +54,8 @@ from asset_pipeline.procedural.textures import (
     textured_mesh,
     tinted,
 )
-from holomj.spec.assets import AssetMeta, CollisionPart, SupportSurface, VisualPart
+from holomj.spec.assets import AssetMeta, VisualPart
 from holomj.spec.base import validate_model
-
-SOURCE = "holomj procedural"
-LICENSE = "Apache-2.0"
-DECIMALS = 6  # metadata numbers (OBJ vertices use 5)
 
 
 @dataclass(frozen=True)
@@ -70,8 +74,6 @@ class AssetDesign:
     textured: bool = True  # False: every material a plain colour, no textures
 
 
-CLEARANCE = 0.05  # free height required above every support surface
-PROUD = 1e-3  # parts standing less than this above a surface (tape, a screen) do not block it
 COVER_TARGET_M = 0.003  # visual surface a part's colliders may leave uncovered before a fix
 MIN_HULL_VERTICES = 64  # MuJoCo's default maxhullvert; raised for assets with bigger hulls
 _MAX_CONVEX_CHECK = 512  # meshes with more vertices are not tried as convex hulls
@@ -114,24 +116,25 @@ def assemble(design: AssetDesign, expected_size: Vec3 | None = None) -> AssetBun
             f"requested {expected_size}"
         )
     colliders, gap = covering_colliders(parts)
-    _check_inside(design.id, colliders, low, high)
-    _check_clearance(design.id, parts)
+    check_inside(design.id, colliders, low, high)
+    check_clearance(design.id, parts)
     collision = []
     hulls: dict[int, np.ndarray] = {}
     for k, collider in enumerate(colliders):
-        part, hull = _collision_part(collider, f"hull_{k:02d}.obj")
+        name = f"hull_{k:02d}.obj"
+        part, hull = collision_record(collider, name)
         if hull is not None:
-            files[part.mesh] = hull[0]  # type: ignore[index]
+            files[name] = hull[0]
             hulls[k] = hull[1]
         collision.append(part)
     volume = sum(c.volume_m3 for c in collision)
-    surfaces = [_support_surface(s) for part in parts for s in part.surfaces()]
+    surfaces = [surface_record(s) for part in parts for s in part.surfaces()]
     surfaces.sort(key=lambda s: (s.height, s.polygon))
     meta = {
         "id": design.id,
         "category": design.category,
         "description": design.description,
-        "size": [_r(v) for v in high - low],
+        "size": [meta_round(v) for v in high - low],
         "mass_kg": design.mass_kg,
         "density_kg_m3": round(design.mass_kg / volume, 3),
         "friction": design.friction,
@@ -177,7 +180,8 @@ def material_visuals(
         if pattern is not None:  # the tint that, times the pattern, averages to the colour
             texture = texture_file(pattern)
             files[texture] = pattern_png(pattern)
-            rgba = tinted(rgba, pattern)  # type: ignore[assignment]
+            r, g, b, a = tinted(rgba, pattern)
+            rgba = (r, g, b, a)
         visual.append(
             VisualPart(
                 mesh=filename,
@@ -250,14 +254,14 @@ def with_collision(part: Part) -> Part | None:
     ``collide`` switch or it is on already."""
     if not dataclasses.is_dataclass(part) or isinstance(part, type):
         return None
-    names = {f.name for f in dataclasses.fields(part)}
-    if "collide" in names:
-        if part.collide:
+    values = {f.name: getattr(part, f.name) for f in dataclasses.fields(part)}
+    if "collide" in values:
+        if values["collide"]:
             return None
-        return dataclasses.replace(part, collide=True)  # type: ignore[type-var]
-    if "part" in names:
-        inner = with_collision(part.part)
-        return None if inner is None else dataclasses.replace(part, part=inner)  # type: ignore[type-var]
+        return dataclasses.replace(part, collide=True)
+    if "part" in values:
+        inner = with_collision(values["part"])
+        return None if inner is None else dataclasses.replace(part, part=inner)
     return None
 
 
@@ -293,108 +297,3 @@ def centred_parts(parts: Sequence[Part]) -> list[Part]:
         -float(low[2]),
     )
     return [p.translated(offset) for p in parts]
-
-
-def _check_inside(asset_id: str, colliders: list[Collider], low: np.ndarray, high: np.ndarray):
-    tol = 2e-5
-    for collider in colliders:
-        half = np.asarray(collider.half_extents())
-        pos = np.asarray(collider.pos)
-        if np.any(pos - half < low - tol) or np.any(pos + half > high + tol):
-            raise ValueError(f"{asset_id}: collider {collider} sticks out of the visual bounds")
-
-
-def _part_boxes(part: Part) -> list[tuple[np.ndarray, np.ndarray]]:
-    boxes = []
-    bounds = part.bounds()
-    if bounds is not None:
-        boxes.append((np.asarray(bounds[0]), np.asarray(bounds[1])))
-    for c in part.colliders():
-        half = np.asarray(c.half_extents())
-        boxes.append((np.asarray(c.pos) - half, np.asarray(c.pos) + half))
-    return boxes
-
-
-def _check_clearance(asset_id: str, parts: Sequence[Part]) -> None:
-    boxes = [box for part in parts for box in _part_boxes(part)]
-    for part in parts:
-        for surface in part.surfaces():
-            xy = np.asarray(surface.polygon)
-            (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
-            h = surface.height
-            for low, high in boxes:
-                if (
-                    high[2] > h + PROUD
-                    and low[2] < h + CLEARANCE
-                    and low[0] < x1 - 1e-6
-                    and high[0] > x0 + 1e-6
-                    and low[1] < y1 - 1e-6
-                    and high[1] > y0 + 1e-6
-                ):
-                    raise ValueError(
-                        f"{asset_id}: the surface at z = {h:.3f} has a part within "
-                        f"{CLEARANCE} m above it ({np.round(low, 3)}..{np.round(high, 3)})"
-                    )
-
-
-def _collision_part(
-    collider: Collider, hull_name: str
-) -> tuple[CollisionPart, tuple[bytes, np.ndarray] | None]:
-    """The metadata of a collider, and for a hull its OBJ file and its vertices as written."""
-    pos = tuple(_r(v) for v in collider.pos)
-    quat = tuple(_r(v) for v in collider.quat)
-    if collider.kind == "mesh":
-        vertices, faces = _hull_mesh(np.asarray(collider.vertices, dtype=float))
-        mesh = rounded(Mesh(vertices, faces))
-        data = obj_bytes(mesh, comment=f"convex collider ({SOURCE}, {LICENSE})")
-        written = tuple((float(x), float(y), float(z)) for x, y, z in mesh.vertices)
-        rounded_collider = Collider("mesh", (), collider.pos, vertices=written)
-        part = CollisionPart(
-            kind="mesh",
-            mesh=hull_name,
-            size=tuple(_r(v) for v in rounded_collider.half_extents()),  # as MuJoCo sizes it
-            pos=pos,
-            quat=(1.0, 0.0, 0.0, 0.0),
-            volume_m3=float(f"{rounded_collider.volume:.9g}"),
-        )
-        return part, (data, mesh.vertices)
-    size = tuple(_r(v) for v in collider.size)
-    rounded_collider = Collider(collider.kind, size, collider.pos, collider.axis)
-    part = CollisionPart(
-        kind=collider.kind,
-        size=size,
-        pos=pos,
-        quat=quat,
-        volume_m3=float(f"{rounded_collider.volume:.9g}"),
-    )
-    return part, None
-
-
-def _hull_mesh(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The convex hull of ``points``: its vertices (in input order) and outward triangles."""
-    from scipy.spatial import ConvexHull
-
-    hull = ConvexHull(points)
-    used = np.sort(hull.vertices)
-    index = np.full(len(points), -1, dtype=np.int64)
-    index[used] = np.arange(len(used))
-    faces = hull.simplices.copy()
-    centre = points[used].mean(axis=0)
-    tri = points[faces]
-    normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    flip = np.einsum("fk,fk->f", normal, tri[:, 0] - centre) < 0
-    faces[flip] = faces[flip][:, [0, 2, 1]]
-    return points[used], index[faces]
-
-
-def _support_surface(surface: Surface) -> SupportSurface:
-    polygon = [(_r(x), _r(y)) for x, y in surface.polygon]
-    area = 0.0
-    for (x0, y0), (x1, y1) in zip(polygon, polygon[1:] + polygon[:1], strict=True):
-        area += x0 * y1 - x1 * y0
-    return SupportSurface(height=_r(surface.height), polygon=polygon, area_m2=_r(0.5 * area))
-
-
-def _r(value: float) -> float:
-    """Round a metadata number; never ``-0.0``."""
-    return round(float(value), DECIMALS) + 0.0

@@ -13,8 +13,6 @@ from asset_pipeline.procedural.home_kit import (
     MARBLE,
     PROUD,
     ROUND,
-    Rng,
-    count_word,
 )
 from asset_pipeline.procedural.kit import (
     ASH,
@@ -28,9 +26,11 @@ from asset_pipeline.procedural.kit import (
     WALNUT,
     WHITE_LACQUER,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
+    count_word,
     drawer_fronts,
     pick,
     square_legs,

@@ -9,8 +9,6 @@ bottom (the generic physics test drops every asset on a plane).
 
 from __future__ import annotations
 
-import numpy as np
-
 from asset_pipeline.procedural.kit import (
     BLACK_METAL,
     BRASS,
@@ -26,11 +24,9 @@ from asset_pipeline.procedural.kit import (
 from asset_pipeline.procedural.parts import Material, Part
 from asset_pipeline.procedural.round_parts import Cylinder
 
-Rng = np.random.Generator
 ROUND = (1.0, 1.0)
 PROUD = FRONT_T + HANDLE_D  # fronts and handles stand this far in front of a carcass
 HANDLES = (BLACK_METAL, CHROME, BRASS)
-_COUNT = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
 
 BRICK = Material("brick", (0.60, 0.28, 0.20, 1.0), 0.1, 0.1, "red brick")
 MARBLE = Material("marble", (0.90, 0.89, 0.86, 1.0), 0.6, 0.7, "white marble")
@@ -44,10 +40,6 @@ SAGE_TOY = Material("sage_toy", (0.62, 0.72, 0.60, 1.0), 0.3, 0.4, "sage")
 IVORY_FACE = Material("ivory_face", (0.95, 0.92, 0.82, 1.0), 0.3, 0.3, "ivory")
 DRUM_GLASS = Material("drum_glass", (0.20, 0.24, 0.27, 0.8), 0.9, 0.9, "tinted glass")
 FABRIC_SHADES = (LAMP_SHADE, WHITE_SHADE, LINEN, MUSTARD_FABRIC, CHARCOAL_FABRIC)
-
-
-def count_word(count: int) -> str:
-    return _COUNT.get(count, str(count))
 
 
 def upright_rod(

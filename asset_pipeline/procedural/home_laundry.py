@@ -12,7 +12,6 @@ from asset_pipeline.procedural.home_kit import (
     DRUM_GLASS,
     SOOT,
     WICKER,
-    Rng,
 )
 from asset_pipeline.procedural.kit import (
     BLACK_METAL,
@@ -29,6 +28,7 @@ from asset_pipeline.procedural.kit import (
     STEEL,
     WHITE_LACQUER,
     WHITE_PLASTIC,
+    Rng,
     block,
     chance,
     clamp,

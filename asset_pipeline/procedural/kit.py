@@ -105,6 +105,26 @@ TOYS = (TOY_RED, TOY_BLUE, TOY_YELLOW, TOY_GREEN)
 
 # --- randomness ----------------------------------------------------------------------------
 T = TypeVar("T")
+Rng = np.random.Generator
+Span = Sequence[float]
+"""A (low, high) pair of coordinates along one axis (a tuple, or a list a builder edits)."""
+
+
+COUNT_WORDS = {
+    1: "one",
+    2: "two",
+    3: "three",
+    4: "four",
+    5: "five",
+    6: "six",
+    7: "seven",
+    8: "eight",
+}
+
+
+def count_word(count: int) -> str:
+    """``count`` in words (one to eight), else in digits."""
+    return COUNT_WORDS.get(count, str(count))
 
 
 def pick(rng: np.random.Generator, options: Sequence[T]) -> T:
@@ -130,9 +150,9 @@ def clamp(value: float, low: float, high: float) -> float:
 
 
 def block(
-    x: tuple[float, float],
-    y: tuple[float, float],
-    z: tuple[float, float],
+    x: Span,
+    y: Span,
+    z: Span,
     material: Material,
     *,
     surface: bool | Rect = False,

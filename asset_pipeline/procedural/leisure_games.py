@@ -20,6 +20,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_LACQUER,
     WHITE_PLASTIC,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
@@ -34,7 +35,6 @@ from asset_pipeline.procedural.leisure_kit import (
     MARQUEE,
     RED_PAINT,
     YELLOW_PAINT,
-    Rng,
     cyl,
     rod,
     tilted,
@@ -78,7 +78,7 @@ def pool_table(size: Vec3, rng: Rng) -> Design:
     apron_z = h - clamp(uniform(rng, 0.2, 0.26), 0.15, 0.3)
     six = d > 2.3 and chance(rng, 0.5)
     leg = clamp(uniform(rng, 0.12, 0.16), 0.1, 0.2)
-    parts: list[Part] = square_legs(d - 0.3, w - 0.3, apron_z, leg, wood)
+    parts: list[Part] = [*square_legs(d - 0.3, w - 0.3, apron_z, leg, wood)]
     if six:
         for y in ((-0.5 * w + 0.15, -0.5 * w + 0.15 + leg), (0.5 * w - 0.15 - leg, 0.5 * w - 0.15)):
             parts.append(block((-0.5 * leg, 0.5 * leg), y, (0.0, apron_z), wood))
@@ -201,12 +201,12 @@ def table_tennis_table(size: Vec3, rng: Rng) -> Design:
             parts.append(
                 block((x + 0.025, x + 0.075), (y, y + 0.05), (0.05, top_z - t - 0.06), legs)
             )
-    for x in ((-hd, hd),):
-        for y in ((-hw, -hw + line), (hw - line, hw)):
-            parts.append(block(x, y, (top_z, top_z + 0.0005), LINE_WHITE, collide=False))
-    for x in ((-hd, -hd + line), (hd - line, hd)):
+    for xs in ((-hd, hd),):
+        for ys in ((-hw, -hw + line), (hw - line, hw)):
+            parts.append(block(xs, ys, (top_z, top_z + 0.0005), LINE_WHITE, collide=False))
+    for xs in ((-hd, -hd + line), (hd - line, hd)):
         parts.append(
-            block(x, (-hw + line, hw - line), (top_z, top_z + 0.0005), LINE_WHITE, collide=False)
+            block(xs, (-hw + line, hw - line), (top_z, top_z + 0.0005), LINE_WHITE, collide=False)
         )
     parts.append(
         block(
@@ -219,8 +219,8 @@ def table_tennis_table(size: Vec3, rng: Rng) -> Design:
     )
     if net:
         parts.append(block((-0.004, 0.004), (-hw, hw), (top_z + 0.01, h), NET_MESH, collide=False))
-        for y in ((-hw, -hw + 0.02), (hw - 0.02, hw)):
-            parts.append(block((-0.012, 0.012), y, (top_z, h), BLACK_METAL))
+        for ys in ((-hw, -hw + 0.02), (hw - 0.02, hw)):
+            parts.append(block((-0.012, 0.012), ys, (top_z, h), BLACK_METAL))
     words = {"top": top.words, "net": "and a net" if net else "with its net taken down"}
     return Design(tuple(parts), words)
 

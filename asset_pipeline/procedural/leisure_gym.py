@@ -20,6 +20,7 @@ from asset_pipeline.procedural.kit import (
     WALNUT,
     WHITE_LACQUER,
     WHITE_PLASTIC,
+    Rng,
     block,
     chance,
     clamp,
@@ -31,7 +32,6 @@ from asset_pipeline.procedural.leisure_kit import (
     RED_PAINT,
     RUBBER,
     UPHOLSTERY,
-    Rng,
     cyl,
     rod,
 )

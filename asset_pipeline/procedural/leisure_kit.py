@@ -8,6 +8,7 @@ or rotated box whose colliders are axis-aligned boxes inscribed in slices of it.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -17,10 +18,18 @@ from asset_pipeline.procedural.kit import (
     LEATHER,
     block,
 )
-from asset_pipeline.procedural.parts import Collider, Material, Mesh, Part, Surface, Vec3, add3
+from asset_pipeline.procedural.parts import (
+    Axis,
+    Collider,
+    Material,
+    Mesh,
+    Part,
+    Surface,
+    Vec3,
+    add3,
+)
 from asset_pipeline.procedural.round_parts import Cylinder
 
-Rng = np.random.Generator
 RUBBER = Material("rubber", (0.05, 0.05, 0.05, 1.0), 0.1, 0.1, "black rubber")
 RED_PAINT = Material("red_paint", (0.72, 0.10, 0.10, 1.0), 0.5, 0.5, "red")
 YELLOW_PAINT = Material("yellow_paint", (0.92, 0.74, 0.12, 1.0), 0.5, 0.5, "yellow")
@@ -120,10 +129,10 @@ class Slab:
 
 def strut(foot: Vec3, top: Vec3, side: float, material: Material, slices: int = 10) -> Slab:
     """A slanted leg of square ``side`` cross-section from ``foot`` up to ``top``."""
-    c = tuple(0.5 * (a + b) for a, b in zip(foot, top))
-    axis = tuple(0.5 * (b - a) for a, b in zip(foot, top))
+    cx, cy, cz = (0.5 * (a + b) for a, b in zip(foot, top))
+    ax, ay, az = (0.5 * (b - a) for a, b in zip(foot, top))
     s = 0.5 * side
-    return Slab(c, ((s, 0.0, 0.0), (0.0, s, 0.0), axis), material, slices=slices)  # type: ignore[arg-type]
+    return Slab((cx, cy, cz), ((s, 0.0, 0.0), (0.0, s, 0.0), (ax, ay, az)), material, slices=slices)
 
 
 def tilted(
@@ -136,7 +145,7 @@ def tilted(
         (0.0, 0.5 * width, 0.0),
         (-0.5 * thick * sa, 0.0, 0.5 * thick * ca),
     )
-    return Slab(center, axes, material, slices=8, along=0)  # type: ignore[arg-type]
+    return Slab(center, axes, material, slices=8, along=0)
 
 
 def tilted_bounds(length: float, thick: float, angle: float) -> tuple[float, float]:
@@ -151,13 +160,13 @@ def cyl(x: float, y: float, z0: float, z1: float, r: float, material: Material, 
 
 
 def rod(
-    axis: str, a0: float, a1: float, p: float, q: float, r: float, material: Material, **kw
+    axis: Axis, a0: float, a1: float, p: float, q: float, r: float, material: Material, **kw: Any
 ) -> Cylinder:
     """A horizontal cylinder along ``axis`` ('x' or 'y') from ``a0`` to ``a1``; (p, q) are the
     other horizontal coordinate and z."""
     mid = 0.5 * (a0 + a1)
     center = (mid, p, q) if axis == "x" else (p, mid, q)
-    return Cylinder(center, r, 0.5 * (a1 - a0), material, axis=axis, **kw)  # type: ignore[arg-type]
+    return Cylinder(center, r, 0.5 * (a1 - a0), material, axis=axis, **kw)
 
 
 def frame_rect(

@@ -20,6 +20,7 @@ from asset_pipeline.procedural.kit import (
     PINE,
     WALNUT,
     WHITE_LACQUER,
+    Rng,
     block,
     chance,
     clamp,
@@ -30,7 +31,6 @@ from asset_pipeline.procedural.leisure_kit import (
     NUMBER_WORDS,
     RUBBER,
     SISAL,
-    Rng,
     cyl,
     rod,
     strut,
@@ -245,12 +245,12 @@ def guitar_amplifier(size: Vec3, rng: Rng) -> Design:
             parts.append(block(x, y, (0.0, 0.02), RUBBER))
     knobs = int(clamp((w - 0.12) // 0.06, 3, 8))
     for k in range(knobs):
-        y = -hw + 0.08 + k * (w - 0.16) / max(1, knobs - 1)
+        yk = -hw + 0.08 + k * (w - 0.16) / max(1, knobs - 1)
         zc = top - 0.5 * panel - 0.005
         parts.append(
             block(
                 (hd - 0.011, hd - 0.01),
-                (y - 0.01, y + 0.01),
+                (yk - 0.01, yk + 0.01),
                 (zc - 0.01, zc + 0.01),
                 BLACK_PLASTIC,
                 collide=False,

@@ -16,6 +16,7 @@ from asset_pipeline.procedural.kit import (
     WALNUT,
     WHITE_PLASTIC,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
@@ -28,7 +29,6 @@ from asset_pipeline.procedural.leisure_kit import (
     GREEN_PAINT,
     RED_PAINT,
     SISAL,
-    Rng,
     frame_rect,
     rod,
 )

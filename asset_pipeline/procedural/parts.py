@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from typing import Literal, Protocol
+from typing import Any, ClassVar, Literal, Protocol
 
 import numpy as np
 
@@ -152,9 +152,14 @@ class Surface:
 
 
 class Part(Protocol):
-    """What an asset is made of."""
+    """What an asset is made of (parts are frozen dataclasses, so the material is read-only and
+    ``dataclasses.replace`` makes a changed copy)."""
 
-    material: Material
+    __dataclass_fields__: ClassVar[dict[str, Any]]
+
+    @property
+    def material(self) -> Material:
+        """The part's material."""
 
     def mesh(self) -> Mesh | None:
         """The visual mesh, or None for a collider-only part."""

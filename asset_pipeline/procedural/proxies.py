@@ -34,7 +34,8 @@ from dataclasses import replace
 
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.procedural.assembly import AssetDesign, assemble
-from asset_pipeline.procedural.attributes import Attributes, finished, styled
+from asset_pipeline.procedural.attributes import Attributes
+from asset_pipeline.procedural.finishes import finished, styled
 from asset_pipeline.procedural.kit import block, square_legs
 from asset_pipeline.procedural.parts import Material, Part, Vec3
 from asset_pipeline.procedural.round_parts import Cylinder, Sphere

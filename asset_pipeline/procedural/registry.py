@@ -14,17 +14,12 @@ import math
 import zlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Literal
+from typing import Literal
 
 import numpy as np
 
-from asset_pipeline.library_writer import AssetBundle
-from asset_pipeline.procedural.assembly import AssetDesign, assemble
 from asset_pipeline.procedural.parts import Part, Vec3
 from holomj.errors import InputError, closest_names
-
-if TYPE_CHECKING:
-    from asset_pipeline.procedural.attributes import Attributes
 
 Kind = Literal["furniture", "object"]
 SIZE_TOLERANCE = 1e-3  # generated bbox vs requested size, and round footprints' x vs y
@@ -152,6 +147,8 @@ class CategoryInfo:
 
 
 CATEGORIES: dict[str, CategoryInfo] = {}
+"""The rigid categories, filled as the generator modules are imported (:mod:`.catalog` imports
+them all, in catalogue order)."""
 
 
 def category(
@@ -175,31 +172,48 @@ def category(
     generator ``generate(size, rng)``, which also takes None (the default size) and raises
     :class:`~holomj.errors.InputError` for a size outside the category's range.
     """
+    chosen = (
+        variants if variants is not None else ((None, None) if kind == "furniture" else (None,))
+    )
+    facts = CategoryFacts(
+        name, kind, size, low, high, mass, description, placement, friction, yx_ratio, zx_ratio
+    )
+    return registrar(CATEGORIES, "category", facts, chosen)
+
+
+@dataclass(frozen=True)
+class CategoryFacts:
+    """What a registration gives of a category besides its builder and variants."""
+
+    name: str
+    kind: Kind
+    default_size: Vec3
+    size_min: Vec3
+    size_max: Vec3
+    mass_kg: float
+    description: str
+    placement: tuple[str, ...]
+    friction: float
+    yx_ratio: tuple[float, float] | None
+    zx_ratio: tuple[float, float] | None
+
+
+def registrar(
+    table: dict[str, CategoryInfo],
+    what: str,
+    facts: CategoryFacts,
+    variants: tuple[Vec3 | None, ...],
+) -> Callable[[Builder], Generator]:
+    """The decorator registering a builder in ``table`` (``what`` names the table in errors)
+    with ``facts``; every size it names is checked against the category's own range."""
 
     def register(builder: Builder) -> Generator:
-        if name in CATEGORIES:
-            raise ValueError(f"category {name!r} registered twice")
-        chosen = (
-            variants if variants is not None else ((None, None) if kind == "furniture" else (None,))
-        )
-        info = CategoryInfo(
-            name=name,
-            kind=kind,
-            builder=builder,
-            default_size=size,
-            size_min=low,
-            size_max=high,
-            mass_kg=mass,
-            description=description,
-            placement=placement,
-            friction=friction,
-            yx_ratio=yx_ratio,
-            zx_ratio=zx_ratio,
-            variants=chosen,
-        )
-        for variant in (size, *(v for v in chosen if v is not None)):
+        if facts.name in table:
+            raise ValueError(f"{what} {facts.name!r} registered twice")
+        info = CategoryInfo(builder=builder, variants=variants, **vars(facts))
+        for variant in (info.default_size, *(v for v in variants if v is not None)):
             info.check_size(variant)
-        CATEGORIES[name] = info
+        table[facts.name] = info
 
         @functools.wraps(builder)
         def generate(size: Vec3 | None, rng: np.random.Generator) -> Design:
@@ -210,17 +224,23 @@ def category(
     return register
 
 
-def category_info(name: str) -> CategoryInfo:
-    """The registered category ``name`` (case and separators ignored), or an InputError."""
-    if name in CATEGORIES:
-        return CATEGORIES[name]
+def lookup(table: dict[str, CategoryInfo], name: str, unknown: str) -> CategoryInfo:
+    """The category ``name`` of ``table`` (case and separators ignored), or an InputError
+    saying ``unknown`` and the nearest known names."""
+    if name in table:
+        return table[name]
     key = _normalised(name)
-    for known, info in CATEGORIES.items():
+    for known, info in table.items():
         if _normalised(known) == key:
             return info
-    near = closest_names(name, CATEGORIES)
-    hint = f"did you mean: {near}" if near else f"known: {', '.join(sorted(CATEGORIES))}"
-    raise InputError(f"unknown procedural category {name!r}", fix=hint)
+    near = closest_names(name, table)
+    hint = f"did you mean: {near}" if near else f"known: {', '.join(sorted(table))}"
+    raise InputError(unknown, fix=hint)
+
+
+def category_info(name: str) -> CategoryInfo:
+    """The registered category ``name`` (case and separators ignored), or an InputError."""
+    return lookup(CATEGORIES, name, f"unknown procedural category {name!r}")
 
 
 def rng_for(category_name: str, seed: int) -> np.random.Generator:
@@ -228,64 +248,6 @@ def rng_for(category_name: str, seed: int) -> np.random.Generator:
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise InputError(f"seed must be a non-negative integer, got {seed!r}")
     return np.random.default_rng([int(seed), zlib.crc32(category_name.encode())])
-
-
-def design_for(
-    category_name: str,
-    asset_id: str,
-    size: Vec3 | None = None,
-    seed: int = 0,
-    attributes: Attributes | None = None,
-) -> tuple[AssetDesign, Vec3]:
-    """The design of asset ``asset_id`` (not yet assembled) and its checked size.
-
-    With ``attributes`` (:mod:`.attributes`) the design honours the colour, material, shape and
-    style asked where it can; the honoured ones are recorded in the design and its description
-    says so. Without them the design is exactly the category generator's.
-    """
-    info = category_info(category_name)
-    resolved = info.check_size(size)
-    honoured: dict[str, str] = {}
-    if attributes:
-        from asset_pipeline.procedural.attributes import conditioned_design, described
-
-        design, resolved, honoured = conditioned_design(info, resolved, seed, attributes)
-    else:
-        design = info.builder(resolved, rng_for(info.name, seed))
-    description = " ".join(info.description.format(**design.words).split())
-    if attributes:
-        description = described(description, info.name, attributes, honoured)
-    asset = AssetDesign(
-        id=asset_id,
-        category=info.name,
-        description=description,
-        mass_kg=info.mass_for(resolved),
-        friction=info.friction,
-        placement=info.placement,
-        parts=design.parts,
-        attributes=tuple(honoured.items()),
-    )
-    return asset, resolved
-
-
-def generate_asset(
-    category_name: str,
-    asset_id: str,
-    size: Vec3 | None = None,
-    seed: int = 0,
-    attributes: Attributes | None = None,
-) -> AssetBundle:
-    """Build asset ``asset_id`` of a category at ``size`` (None: default) in style ``seed``.
-
-    ``attributes`` (colour, material, shape, style; see :mod:`.attributes`) condition the
-    design; those honoured are recorded in the metadata (``attributes``). A shape may change
-    the size (a round table's footprint is square: its side is the smaller planned one).
-    Deterministic: the same (category, size, seed, attributes) gives byte-identical files.
-    Raises :class:`~holomj.errors.InputError` for an unknown category, a size outside the
-    category's range or a negative seed.
-    """
-    asset, resolved = design_for(category_name, asset_id, size, seed, attributes)
-    return assemble(asset, expected_size=resolved)
 
 
 def _normalised(name: str) -> str:

@@ -116,7 +116,7 @@ def with_material(part: Part, material: Material) -> Part:
     """``part`` made of ``material`` (its role kept)."""
     if isinstance(part, Tagged):
         return Tagged(with_material(part.part, material), part.role)
-    return replace(part, material=material)  # type: ignore[type-var]
+    return replace(part, material=material)
 
 
 def roles_in(parts: Iterable[Part]) -> set[str]:

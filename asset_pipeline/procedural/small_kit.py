@@ -9,8 +9,6 @@ table; thin details (keys, labels, screens, pens) are visual only. Round items
 
 from __future__ import annotations
 
-import numpy as np
-
 from asset_pipeline.procedural.kit import (
     ALUMINIUM,
     BLACK_PLASTIC,
@@ -22,7 +20,6 @@ from asset_pipeline.procedural.kit import (
 from asset_pipeline.procedural.parts import Material, Part
 from asset_pipeline.procedural.round_parts import Cylinder
 
-Rng = np.random.Generator
 OBJECT = ("object",)
 ROUND = (1.0, 1.0)
 

@@ -16,6 +16,7 @@ from asset_pipeline.procedural.kit import (
     COVERS,
     PAPER,
     WOODS,
+    Rng,
     block,
     clamp,
     pick,
@@ -30,7 +31,6 @@ from asset_pipeline.procedural.small_kit import (
     OBJECT,
     RED_PLASTIC,
     ROUND,
-    Rng,
     cyl_y,
     deco,
 )

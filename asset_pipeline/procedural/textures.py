@@ -94,11 +94,11 @@ def box_uv(mesh: Mesh, tile_m: float, grain_axis: int) -> Mesh:
             pairs[axis] = others
     keys = (faces * 3 + facing[:, None]).reshape(-1)  # (vertex, facing) per corner
     unique, inverse = np.unique(keys, return_inverse=True)
-    vertex, axis = unique // 3, unique % 3
+    vertex, facing_axis = unique // 3, unique % 3
     uv = np.stack(
         [
-            vertices[vertex, pairs[axis, 0]],
-            vertices[vertex, pairs[axis, 1]],
+            vertices[vertex, pairs[facing_axis, 0]],
+            vertices[vertex, pairs[facing_axis, 1]],
         ],
         axis=1,
     ) / float(tile_m)

@@ -17,6 +17,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_PLASTIC,
     WHITEBOARD,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
@@ -34,9 +35,6 @@ from asset_pipeline.procedural.leisure_kit import (
 )
 from asset_pipeline.procedural.parts import Material, Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
-from asset_pipeline.procedural.work_kit import (
-    Rng,
-)
 
 PEGBOARD = Material("pegboard", (0.62, 0.47, 0.30, 1.0), 0.1, 0.1, "brown pegboard")
 WHITE_PEGBOARD = Material("white_pegboard", (0.92, 0.92, 0.90, 1.0), 0.1, 0.1, "white pegboard")

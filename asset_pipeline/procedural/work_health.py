@@ -15,6 +15,7 @@ from asset_pipeline.procedural.kit import (
     OAK,
     PAPER,
     STEEL,
+    Rng,
     block,
     chance,
     clamp,
@@ -34,7 +35,6 @@ from asset_pipeline.procedural.work_kit import (
     LAB_WHITE,
     OFFICE_GREY,
     PUTTY,
-    Rng,
 )
 
 MINT = Material("mint_vinyl", (0.55, 0.78, 0.72, 1.0), 0.4, 0.5, "mint green vinyl")
@@ -104,9 +104,9 @@ def hospital_bed(size: Vec3, rng: Rng) -> Design:
     else:
         parts.append(block(xi, yi, (plat_z, top), LINEN, surface=(xi[0] + 0.45, xi[1], *yi)))
         parts.append(block((xi[0] + 0.05, xi[0] + 0.4), (-0.25, 0.25), (top, top + 0.1), LINEN))
-    for y in ((-hw, -hw + rail), (hw - rail, hw)):
+    for rail_y in ((-hw, -hw + rail), (hw - rail, hw)):
         parts += frame_rect_y(
-            (xi[0] + 0.1, xi[0] + 1.0), y, (plat_z, min(top + 0.3, h - 0.02)), 0.03, frame
+            (xi[0] + 0.1, xi[0] + 1.0), rail_y, (plat_z, min(top + 0.3, h - 0.02)), 0.03, frame
         )
     words = {"frame": frame.words, "back": "a raised backrest" if raised else "a pillow"}
     return Design(tuple(parts), words)

@@ -5,8 +5,6 @@ Every generator fills exactly ``[-d/2, d/2] x [-w/2, w/2] x [0, h]`` (x = depth,
 
 from __future__ import annotations
 
-import numpy as np
-
 from asset_pipeline.procedural.kit import (
     BLACK_METAL,
     CHROME,
@@ -14,7 +12,6 @@ from asset_pipeline.procedural.kit import (
 )
 from asset_pipeline.procedural.parts import Material
 
-Rng = np.random.Generator
 LAB_WHITE = Material("lab_white", (0.88, 0.89, 0.87, 1.0), 0.4, 0.4, "white")
 OFFICE_GREY = Material("office_grey", (0.62, 0.63, 0.62, 1.0), 0.4, 0.4, "light grey")
 PUTTY = Material("putty", (0.80, 0.78, 0.70, 1.0), 0.4, 0.4, "putty")

@@ -14,6 +14,7 @@ from asset_pipeline.procedural.kit import (
     SPACE_GREY,
     STEEL,
     WHITE_PLASTIC,
+    Rng,
     block,
     chance,
     clamp,
@@ -39,7 +40,6 @@ from asset_pipeline.procedural.work_kit import (
     NUMBER_WORDS,
     OFFICE_GREY,
     PUTTY,
-    Rng,
 )
 
 LED_GREEN = Material("led_green", (0.2, 1.0, 0.3, 1.0), 1.0, 1.0)

@@ -22,6 +22,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_LACQUER,
     WHITE_PLASTIC,
     WOODS,
+    Rng,
     block,
     clamp,
     pick,
@@ -39,7 +40,6 @@ from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     NUMBER_WORDS,
     OFFICE_GREY,
-    Rng,
 )
 
 # --- shops ------------------------------------------------------------------------------------

@@ -20,6 +20,7 @@ from asset_pipeline.procedural.kit import (
     WHITE_LACQUER,
     WHITE_PLASTIC,
     WHITEBOARD,
+    Rng,
     block,
     chance,
     clamp,
@@ -37,7 +38,6 @@ from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     METAL_HANDLES,
     NUMBER_WORDS,
-    Rng,
 )
 
 
@@ -101,11 +101,11 @@ def mixing_desk(size: Vec3, rng: Rng) -> Design:
     channels = int(clamp((cw - 0.04) // 0.035, 8, 48))
     pitch = (cw - 0.04) / channels
     for k in range(channels):
-        y = yc[0] + 0.02 + (k + 0.5) * pitch
+        yk = yc[0] + 0.02 + (k + 0.5) * pitch
         parts.append(
             block(
                 (xb + 0.32, hd - 0.06),
-                (y - 0.003, y + 0.003),
+                (yk - 0.003, yk + 0.003),
                 (desk_z + 0.05, desk_z + 0.051),
                 STEEL,
                 collide=False,
@@ -114,7 +114,7 @@ def mixing_desk(size: Vec3, rng: Rng) -> Design:
         parts.append(
             block(
                 (xb + 0.05, xb + 0.28),
-                (y - 0.005, y + 0.005),
+                (yk - 0.005, yk + 0.005),
                 (desk_z + 0.09, desk_z + 0.091),
                 WHITE_PLASTIC,
                 collide=False,
@@ -269,7 +269,7 @@ def sewing_table(size: Vec3, rng: Rng) -> Design:
             collide=False,
         ),
         block((-hd, face), (hw - ped, hw), (0.0, h - t), top),
-        *[p for p in square_legs(d, w, h - t, 0.045, top) if p.bounds()[0][1] < 0.0],
+        *[p for p in square_legs(d, w, h - t, 0.045, top) if p.center[1] - p.half[1] < 0.0],
         block((-hd + 0.02, -hd + 0.04), (-hw + 0.045, hw - ped), (0.1, h - t - 0.08), top),
     ]
     parts += drawer_fronts(face, (hw - ped, hw), (0.02, h - t - 0.01), n, 1, top, handle)

@@ -10,6 +10,7 @@ from asset_pipeline.procedural.kit import (
     PINE,
     SPACE_GREY,
     STEEL,
+    Rng,
     block,
     chance,
     clamp,
@@ -24,7 +25,6 @@ from asset_pipeline.procedural.parts import Material, Part, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     NUMBER_WORDS,
-    Rng,
 )
 
 ORANGE_STEEL = Material("orange_steel", (0.92, 0.42, 0.08, 1.0), 0.5, 0.5, "orange")
@@ -77,8 +77,8 @@ def pallet_rack(size: Vec3, rng: Rng) -> Design:
             if not chance(rng, 0.85):
                 continue
             px = (-hd + 0.02, hd - 0.02)
-            for x in (px[0], 0.0, px[1] - 0.1):
-                xx = (x - 0.05, x + 0.05) if x == 0.0 else (x, x + 0.1)
+            for x0 in (px[0], 0.0, px[1] - 0.1):
+                xx = (x0 - 0.05, x0 + 0.05) if x0 == 0.0 else (x0, x0 + 0.1)
                 parts.append(block(xx, (y0, y1), (z, z + 0.1), PINE))
             parts.append(block(px, (y0, y1), (z + 0.1, z + 0.14), PINE))
             boxes = int(rng.integers(1, 4))

@@ -14,6 +14,7 @@ from asset_pipeline.procedural.kit import (
     PINE,
     SPACE_GREY,
     STEEL,
+    Rng,
     block,
     chance,
     clamp,
@@ -38,7 +39,6 @@ from asset_pipeline.procedural.work_kit import (
     NUMBER_WORDS,
     OFFICE_GREY,
     PUTTY,
-    Rng,
 )
 
 RESIN = Material("black_resin", (0.07, 0.07, 0.08, 1.0), 0.5, 0.6, "black epoxy resin")

@@ -40,6 +40,9 @@ class JobResult(FrozenModel):
     stable: int | None = None
     stable_fraction: float | None = Field(default=None, ge=0.0, le=1.0)
     seconds: float = Field(ge=0.0)
+    moved: int | None = Field(default=None, description="House jobs: objects moved to stand.")
+    left_out: int | None = Field(default=None, description="House jobs: objects left out.")
+    substituted: int | None = Field(default=None, description="House jobs: stand-in assets.")
     error: str | None = None
     output: str | None = Field(default=None, description="The job's folder, relative to DIR.")
 

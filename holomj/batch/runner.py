@@ -31,10 +31,11 @@ def run_job(job: Job, out_dir: Path, options: JobOptions) -> JobResult:
     out_dir = Path(out_dir)
     clean_partial(out_dir, job)
     folder = job_folder(out_dir, job)
+    house: dict[str, int | None] = {"moved": None, "left_out": None, "substituted": None}
     if job.kind == "prompt":
         report = _generate(job, folder, options)
     else:
-        report = _compile_and_validate(job, folder, options)
+        report, house = _compile_and_validate(job, folder, options)
     counts = report.counts
     objects = int(counts.get("objects", len(report.objects)))
     stable = int(counts.get("stable", objects - len(report.unstable())))
@@ -49,6 +50,9 @@ def run_job(job: Job, out_dir: Path, options: JobOptions) -> JobResult:
         stable_fraction=round(stable / objects, 4) if objects else 1.0,
         seconds=round(time.perf_counter() - start, 3),
         output=job.id,
+        moved=house["moved"],
+        left_out=house["left_out"],
+        substituted=house["substituted"],
     )
     write_file(folder / MARKER, result.model_dump_json(indent=2) + "\n")
     return result
@@ -81,11 +85,14 @@ def _generate(job: Job, folder: Path, options: JobOptions) -> StabilityReport:
     return generate_scene(job.input, folder, generate_options).report
 
 
-def _compile_and_validate(job: Job, folder: Path, options: JobOptions) -> StabilityReport:
+def _compile_and_validate(
+    job: Job, folder: Path, options: JobOptions
+) -> tuple[StabilityReport, dict[str, int | None]]:
+    """The validation report, and what the import changed (moved, left out, substituted)."""
     from holomj.jobs.compile import compile_file
     from holomj.jobs.validate import validate
 
-    compile_file(  # an object that cannot be saved makes the job "unstable", not "failed"
+    compiled = compile_file(  # an object that cannot be saved makes the job "unstable"
         Path(job.input),
         folder,
         library_path=options.library,
@@ -94,4 +101,9 @@ def _compile_and_validate(job: Job, folder: Path, options: JobOptions) -> Stabil
     )
     report = validate(folder)
     write_report(folder, REPORT_JSON, report.model_dump(mode="json"))
-    return report
+    stand = compiled.stand or {}
+    return report, {
+        "moved": len(stand.get("moved", [])),
+        "left_out": len(stand.get("left_out", [])),
+        "substituted": len(compiled.substitutions),
+    }

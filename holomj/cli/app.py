@@ -25,6 +25,7 @@ from holomj.cli.refine import refine_command
 from holomj.cli.render import render_command
 from holomj.cli.robot import add_robot_command
 from holomj.cli.schema import schema_command
+from holomj.cli.tasks import tasks_command
 from holomj.cli.validate import validate_command
 
 app = typer.Typer(
@@ -51,6 +52,7 @@ app.command("edit")(edit_command)
 app.command("refine")(refine_command)
 app.command("export")(export_command)
 app.command("schema")(schema_command)
+app.command("tasks")(tasks_command)
 
 
 def main() -> None:

@@ -199,6 +199,14 @@ class _BatchProgress:
         self.progress.update(self.task, advance=1, description=self.describe())
 
 
+def _counts(result: JobResult) -> tuple[str, str, str]:
+    """A house job's moved, left-out and substituted objects (blank when not known)."""
+    moved, left, substituted = (
+        "" if v is None else str(v) for v in (result.moved, result.left_out, result.substituted)
+    )
+    return (moved, left, substituted)
+
+
 def _print_table(outcome: BatchOutcome, out: Path) -> None:
     """The results table and a totals line."""
     table = Table(title=f"holomj batch -> {out}")
@@ -207,6 +215,9 @@ def _print_table(outcome: BatchOutcome, out: Path) -> None:
     table.add_column("status", no_wrap=True, min_width=8)
     table.add_column("objects", justify="right", no_wrap=True, min_width=7)
     table.add_column("stable", justify="right", no_wrap=True, min_width=6)
+    houses = any(r.kind == "house" for r in outcome.results)
+    for name in ("moved", "left out", "substituted") if houses else ():
+        table.add_column(name, justify="right", no_wrap=True, min_width=len(name))
     table.add_column("seconds", justify="right", no_wrap=True, min_width=7)
     table.add_column("error", overflow="fold", min_width=20)
     skipped = set(outcome.skipped)
@@ -219,6 +230,7 @@ def _print_table(outcome: BatchOutcome, out: Path) -> None:
             f"[{style}]{result.status}[/]" + ("*" if result.id in skipped else ""),
             "" if result.objects is None else str(result.objects),
             fraction,
+            *(_counts(result) if houses else ()),
             f"{result.seconds:.1f}",
             error if len(error) <= ERROR_WIDTH else error[: ERROR_WIDTH - 1] + "…",
         )

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
+from rich.markup import escape
 
 from holomj.cli.options import (
     JsonOption,
@@ -30,17 +31,18 @@ from holomj.importers.detect import FORMATS
 if TYPE_CHECKING:
     from holomj.jobs.compile import CompileReport
 
-
-InputArg = Annotated[
+InputArgument = Annotated[
     Path,
     typer.Argument(
         metavar="INPUT",
         help="holomj scene.json, ProcTHOR/Holodeck house JSON or SceneDef JSON.",
     ),
 ]
+
 FormatOption = Annotated[
     str | None, typer.Option("--format", help=f"Force the input format: {', '.join(FORMATS)}.")
 ]
+
 CheckSecondsOption = Annotated[
     float,
     typer.Option(
@@ -50,6 +52,7 @@ CheckSecondsOption = Annotated[
         help="Seconds to simulate as a smoke test (0 skips).",
     ),
 ]
+
 FixOption = Annotated[
     bool | None,
     typer.Option(
@@ -60,6 +63,7 @@ FixOption = Annotated[
         show_default=False,
     ),
 ]
+
 AllowInvalidOption = Annotated[
     bool,
     typer.Option(
@@ -69,9 +73,28 @@ AllowInvalidOption = Annotated[
     ),
 ]
 
+StrictOption = Annotated[
+    bool,
+    typer.Option(
+        "--strict",
+        help="Refuse the house (exit 1, nothing written) when any object would be left "
+        "out; by default what cannot stand anywhere is left out and listed.",
+    ),
+]
+
+ObjathorOption = Annotated[
+    Path | None,
+    typer.Option(
+        "--objathor",
+        help="objathor asset folder: the Objaverse assets a Holodeck house names by uid "
+        "are imported from it into the library first, so the real meshes are used where "
+        "it has them (stand-ins of the same kind elsewhere).",
+    ),
+]
+
 
 def compile_command(
-    input_path: InputArg,
+    input_path: InputArgument,
     out: OutFolderOption,
     fmt: FormatOption = None,
     library: LibraryOption = None,
@@ -82,6 +105,8 @@ def compile_command(
     seed: SeedOption = 0,
     fix: FixOption = None,
     allow_invalid: AllowInvalidOption = False,
+    strict: StrictOption = False,
+    objathor: ObjathorOption = None,
     as_json: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
@@ -103,6 +128,8 @@ def compile_command(
                 seed=seed,
                 fix=fix,
                 allow_invalid=allow_invalid,
+                strict=strict,
+                objathor=objathor,
             )
         )
     if as_json:
@@ -113,7 +140,7 @@ def compile_command(
 
 def _print_report(report: CompileReport) -> None:
     """What was compiled: counts, the robot, making it stand, substitutions and warnings."""
-    scene, model = report.scene, report.model
+    scene, model, robot = report.scene, report.model, report.robot
     out_console.print(
         f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
     )
@@ -122,7 +149,6 @@ def _print_report(report: CompileReport) -> None:
         f"{scene.windows} windows, {scene.objects} objects; "
         f"{model.bodies} bodies, {model.geoms} geoms, {model.total_mass_kg} kg"
     )
-    robot = report.robot
     if robot is not None:
         x, y, _ = robot.position
         out_console.print(
@@ -149,16 +175,32 @@ def _print_stand(stand: dict[str, Any]) -> None:
         f"{before['count']} (max {before['max_m'] * 1000:.0f} mm) -> {after['count']} "
         f"(max {after['max_m'] * 1000:.1f} mm)"
     )
-    if stand["valid"]:  # then it was validated
-        validation = stand["validation"]
+    _print_kept(stand)
+    validation = stand.get("validation") or {}
+    if stand["valid"]:
         out_console.print(
             f"  [green]valid:[/] {validation['stable']}/{validation['objects']} objects stable"
         )
         return
-    unsaved = stand["unsaved"]
     out_console.print(
-        f"  [bold red]INVALID[/] (written with --allow-invalid): {len(unsaved)} object(s) "
-        "could not be made to stand (see import_report.json)"
+        f"  [bold red]INVALID[/] (written with --allow-invalid): {escape(str(stand['refusal']))}"
     )
-    for row in unsaved[:8]:
+    for row in stand["unsaved"][:8]:
         out_console.print(f"    {row['object']}: {row['why']}", markup=False)
+
+
+def _print_kept(stand: dict[str, Any]) -> None:
+    """The objects moved to another receptacle or left out, and the share kept."""
+    relocated, left = stand.get("relocated", []), stand.get("left_out", [])
+    if not relocated and not left:
+        return
+    out_console.print(
+        f"  kept {stand['objects_kept']}/{stand['objects_imported']} objects "
+        f"({stand['kept_share']:.1%}): {len(relocated)} moved to another receptacle, "
+        f"{len(left)} left out (see import_report.json)"
+    )
+    for row in (relocated + left)[:8]:
+        to = row["to"]["support"] if row["to"] else "left out"
+        out_console.print(
+            f"    {row['object']}: {row['from']['support']} -> {to}: {row['why']}", markup=False
+        )

@@ -39,9 +39,7 @@ from holomj.cli.options import (
     StrictOption,
     TextModelOption,
 )
-from holomj.cli.output import emit_json, err_console, guard, library_root, out_console, spinner
-
-GENERATE_FURNITURE = ("free", "static")
+from holomj.cli.output import emit_json, err_console, guard, out_console, spinner
 
 
 def generate_command(
@@ -88,11 +86,29 @@ def generate_command(
 
     --strict: exit 1 when the scene does not validate ok or the render fails.
     """
-    from holomj.api import generate
-    from holomj.jobs.plan import check_planner
+    from holomj.jobs.generate import GenerateOptions, generate_scene
 
-    checked_planner = guard(lambda: check_planner(planner))
-    library_path = library_root(library)
+    options = GenerateOptions(
+        seed=seed,
+        planner=planner,
+        library=library,
+        overwrite=overwrite,
+        render=render,
+        width=width,
+        height=height,
+        furniture=furniture,
+        robot=robot,
+        profile=profile,
+        text_model=text_model,
+        clip_weights=clip_weights,
+        clip_model=clip_model,
+        materials=materials,
+        llm_base_url=llm_base_url,
+        llm_model=llm_model,
+        llm_api_key=llm_api_key,
+        llm_config=llm_config,
+        layout_time=layout_time,
+    )
     show = not (quiet or as_json)
     with spinner("generating", show=show) as status:
 
@@ -100,32 +116,7 @@ def generate_command(
             if show:
                 status.update(f"{stage}: {message}"[:120])
 
-        result = guard(
-            lambda: generate(
-                prompt,
-                out,
-                seed=seed,
-                planner=checked_planner,
-                library=library_path,
-                overwrite=overwrite,
-                render=render,
-                width=width,
-                height=height,
-                furniture=furniture,  # type: ignore[arg-type]
-                robot=robot,
-                profile=profile,  # type: ignore[arg-type]
-                text_model=text_model,
-                clip_weights=clip_weights,
-                clip_model=clip_model,
-                materials=materials,
-                llm_base_url=llm_base_url,
-                llm_model=llm_model,
-                llm_api_key=llm_api_key,
-                llm_config=llm_config,
-                layout_time=layout_time,
-                listener=listener,
-            )
-        )
+        result = guard(lambda: generate_scene(prompt, out, options, listener=listener))
     failure = result.render_error
     summary = result.summary()
     summary["render"] = None if not render else {"ok": failure is None, "error": failure}
@@ -166,11 +157,11 @@ def plan_command(
 ) -> None:
     """Plan a scene from a prompt without building it: print (or write) the ScenePlan JSON."""
     from holomj.jobs.folder import write_json_file
-    from holomj.jobs.plan import PlanOptions, check_planner, plan_scene
+    from holomj.jobs.plan import PlanOptions, plan_scene
 
     options = PlanOptions(
         seed=seed,
-        planner=guard(lambda: check_planner(planner)),
+        planner=planner,
         text_model=text_model,
         llm_base_url=llm_base_url,
         llm_model=llm_model,

@@ -15,7 +15,7 @@ from holomj.cli.output import guard
 
 def schema_command(
     kind: Annotated[
-        str, typer.Argument(help="scene, asset, library, report, plan or edit.")
+        str, typer.Argument(help="scene, asset, library, report, plan, task or edit.")
     ] = "scene",
     out: OutFileOption = None,
 ) -> None:

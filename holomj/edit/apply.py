@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from holomj.edit.floor import object_yaw
+from holomj.edit.footprints import object_yaw
 from holomj.edit.lights import light
 from holomj.edit.objects import add, move, remove, replace
 from holomj.edit.small import add_on

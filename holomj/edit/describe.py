@@ -58,7 +58,9 @@ def describe(description: str, room_type: str, seed: int = 0, encoder: Any = Non
     kinds = [r for r in parsed.objects if not r.excluded]
     wanted = kinds[0].kind if kinds else None
     generic = kinds[0].generic if kinds else False
-    options = set(kb.generics[wanted].kinds) if generic and wanted in kb.generics else {wanted}
+    options: set[str | None] = (
+        set(kb.generics[wanted].kinds) if generic and wanted in kb.generics else {wanted}
+    )
     room = _room(plan, room_type)
     notes = tuple(n for n in plan.notes if "not in the knowledge base" in n or "left out" in n)
     subject = _named(room, options) if room is not None else None
@@ -67,12 +69,8 @@ def describe(description: str, room_type: str, seed: int = 0, encoder: Any = Non
         return small
     if subject is None and room is not None:
         subject = _subject(room, text)
-    if subject is not None:
-        relations = tuple(
-            (r.kind, r.target)
-            for r in room.relations
-            if r.subject == subject.name  # type: ignore[union-attr]
-        )
+    if subject is not None and room is not None:  # a subject is always of a room
+        relations = tuple((r.kind, r.target) for r in room.relations if r.subject == subject.name)
         return Described(
             name=subject.name,
             description=subject.description.strip() or subject.name,

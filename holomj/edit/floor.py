@@ -3,7 +3,7 @@
 The layout solver lays out a whole room; an edit must not move what it does not touch, so a new
 (or moved, or replaced) floor object is placed by a search over free floor poses instead: every
 centre on the layout's 5 cm grid and every quarter turn (or the one yaw asked), in the room's
-layout polygon (inset from the walls as :mod:`holomj.layout.room_furnishing` does it). The
+layout polygon (inset from the walls as :mod:`holomj.compose.room_furnishing` does it). The
 checks are the layout's hard rules, in metres, against the real footprints of everything in the
 room (turned by any yaw):
 
@@ -30,39 +30,45 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
-from scipy import ndimage
-from shapely.geometry import Point, Polygon
+from shapely.geometry import Polygon
 from shapely.geometry.polygon import orient
 
+from holomj.edit.floor_rules import (
+    bounded_extent,
+    constraint_holds,
+    layout_openings,
+    turned_half_extents,
+)
+from holomj.edit.floor_walk import FloorWalk
+from holomj.edit.footprints import (
+    FLOOR_Z_M,
+    Thing,
+    corners,
+    footprint,
+    in_room,
+    object_size,
+    object_yaw,
+)
 from holomj.edit.state import Refused
 from holomj.layout import geometry as geo
-from holomj.layout.constraints import PLACE_KINDS, Constraint
+from holomj.layout.constraints import OPENING_KINDS, Constraint
+from holomj.layout.furniture_rules import DOOR_CLEARANCE_M, WALKER_RADIUS_M
 from holomj.layout.geometry import LAYOUT_MARGIN_M
-from holomj.layout.place_relations import place_holds
-from holomj.layout.room_furnishing import DOOR_CLEARANCE_M, WALKER_RADIUS_M
 from holomj.layout.room_problem import (
-    LayoutDoor,
     LayoutObject,
     LayoutSettings,
-    LayoutWindow,
     PreparedRoom,
     RoomProblem,
 )
 from holomj.library.store import AssetLibrary
 from holomj.spec.decor import DECOR_CATEGORIES
-from holomj.spec.scene import SceneObject, SceneSpec
+from holomj.spec.scene import SceneSpec
 
 STEP_M = 0.05
 CLEARANCE_M = 0.05
 FRONT_CLEARANCE_M = 0.3
-NAV_RADIUS_M = 0.15  # a 0.3 m robot must reach the new object and keep the floor it reached
-NAV_CELL_M = 0.05
-REACH_M = 0.1  # the robot gets this close to the object's footprint
-LOST_FLOOR_M2 = 0.1
-FLOOR_Z_M = 0.05  # an object whose base is lower than this stands on the floor
 MAX_TRIES = 1500
 NEW = "new"  # the layout name of the object being placed
-_OPENING_KINDS = frozenset({"by_window", "under_window", "facing_window", "by_door", "facing_door"})
 
 
 @dataclass(frozen=True)
@@ -102,73 +108,6 @@ class Blocker:
     room: str | None = None
 
 
-@dataclass(frozen=True)
-class _Thing:
-    """An object of the room as placement sees it."""
-
-    id: str
-    polygon: Polygon
-    bottom: float
-    top: float
-    x: float
-    y: float
-    yaw_deg: float
-    width: float
-    depth: float
-    on_floor: bool
-
-
-def object_size(obj: SceneObject, library: AssetLibrary) -> tuple[float, float, float]:
-    """(x extent, y extent, height) of an object, scale applied."""
-    sx, sy, sz = obj.scale3
-    if obj.asset not in library:
-        return (sx, sy, sz)
-    size = library.get(obj.asset).meta.size
-    return (size[0] * sx, size[1] * sy, size[2] * sz)
-
-
-def object_yaw(obj: SceneObject) -> float:
-    """The yaw of an object in degrees (from its quaternion when it has one)."""
-    if obj.quat is None:
-        return obj.yaw_deg
-    w, x, y, z = obj.quat
-    return math.degrees(math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
-
-
-def footprint(x: float, y: float, yaw_deg: float, width: float, depth: float) -> Polygon:
-    """The footprint rectangle (``depth`` along the object's front, ``width`` across)."""
-    return shapely.polygons(_corners(np.array([x]), np.array([y]), yaw_deg, width, depth))[0]
-
-
-def _corners(xs: np.ndarray, ys: np.ndarray, yaw_deg: float, width: float, depth: float):
-    c, s = math.cos(math.radians(yaw_deg)), math.sin(math.radians(yaw_deg))
-    local = np.array(
-        [[depth / 2, width / 2], [-depth / 2, width / 2], [-depth / 2, -width / 2],
-         [depth / 2, -width / 2]]
-    )  # fmt: skip
-    rx = local[:, 0] * c - local[:, 1] * s
-    ry = local[:, 0] * s + local[:, 1] * c
-    coords = np.empty((len(xs), 4, 2))
-    coords[:, :, 0] = xs[:, None] + rx[None, :]
-    coords[:, :, 1] = ys[:, None] + ry[None, :]
-    return np.round(coords, 9)
-
-
-def in_room(scene: SceneSpec, obj: SceneObject, room_id: str) -> bool:
-    """Whether ``obj`` belongs to room ``room_id`` (its ``room``, else where it stands)."""
-    if obj.room is not None:
-        return obj.room == room_id
-    return Polygon(scene.room(room_id).polygon).covers(Point(obj.position[0], obj.position[1]))
-
-
-def room_at(scene: SceneSpec, x: float, y: float) -> str | None:
-    """The room whose floor holds ``(x, y)``, or None."""
-    for room in scene.rooms:
-        if Polygon(room.polygon).buffer(1e-6).covers(Point(x, y)):
-            return room.id
-    return None
-
-
 class RoomFloor:
     """A room's floor with everything in it held still (``exclude``: ids left out, such as the
     object being moved and what rests on it)."""
@@ -188,7 +127,7 @@ class RoomFloor:
         if not isinstance(shape, Polygon) or shape.is_empty:
             raise Refused(f"room {room_id!r} has no usable floor")
         self.polygon = orient(shape, sign=1.0)
-        self.things: list[_Thing] = []
+        self.things: list[Thing] = []
         for obj in scene.objects:
             if obj.id in exclude or obj.support is not None or not in_room(scene, obj, room_id):
                 continue
@@ -199,7 +138,7 @@ class RoomFloor:
             yaw = object_yaw(obj)
             x, y, z = obj.position
             self.things.append(
-                _Thing(
+                Thing(
                     obj.id, footprint(x, y, yaw, width, depth), z, z + height, x, y, yaw,
                     width, depth, z < FLOOR_Z_M,
                 )
@@ -210,13 +149,13 @@ class RoomFloor:
             c = blocker.polygon.centroid
             x0, y0, x1, y1 = blocker.polygon.bounds
             self.things.append(
-                _Thing(
+                Thing(
                     blocker.id, blocker.polygon, 0.0, blocker.height, c.x, c.y, 0.0,
                     y1 - y0, x1 - x0, True,
                 )
             )  # fmt: skip
         self.ids = {t.id for t in self.things}
-        self._walk: _Walk | None = None
+        self._walk: FloorWalk | None = None
 
     # ------------------------------------------------------------------ the layout's view
 
@@ -224,35 +163,13 @@ class RoomFloor:
         """The layout problem of this room with the object to place (``NEW``) and its wishes,
         prepared (door zones, window zones, anchors, the walk checker)."""
         ring = list(self.polygon.exterior.coords)[:-1]
-        doors = []
-        for door in self.scene.doors:
-            if self.room.id not in door.rooms:
-                continue
-            swing = "none"
-            if door.kind == "doorway":
-                swing = "in" if (door.opens_into or door.rooms[0]) == self.room.id else "out"
-            position, span = _on_edge(ring, door.position, door.effective_width, 0.4)
-            doors.append(
-                LayoutDoor(
-                    id=f"d{len(doors)}", position=position, width=span, swing=swing,
-                    hinge=door.hinge_side,
-                )
-            )  # fmt: skip
-        windows = []
-        for k, w in enumerate(x for x in self.scene.windows if self.room.id in x.rooms):
-            position, span = _on_edge(ring, w.position, w.width, 0.2)
-            windows.append(
-                LayoutWindow(
-                    id=f"w{k}", position=position, width=span, sill_height=w.base_height,
-                    height=w.height,
-                )
-            )  # fmt: skip
+        doors, windows = layout_openings(self.scene, self.room.id, ring)
         objects = [
             LayoutObject(
                 id=f"o{k}",
-                width=_bounded(t.width),
-                depth=_bounded(t.depth),
-                height=_bounded(t.top - t.bottom),
+                width=bounded_extent(t.width),
+                depth=bounded_extent(t.depth),
+                height=bounded_extent(t.top - t.bottom),
             )
             for k, t in enumerate(self.things)
         ]
@@ -265,8 +182,8 @@ class RoomFloor:
             target = alias.get(wish.target) if wish.target is not None else None
             constraints.append(
                 Constraint(
-                    object=NEW, kind=wish.kind, target=target, weight=wish.weight,  # type: ignore[arg-type]
-                    source=wish.source or None,
+                    object=NEW, target=target, weight=wish.weight, source=wish.source or None,
+                    kind=wish.kind,  # type: ignore[arg-type]  # str from the tables; pydantic checks it
                 )
             )  # fmt: skip
         problem = RoomProblem(
@@ -290,7 +207,7 @@ class RoomFloor:
     ) -> list[tuple[str, np.ndarray]]:
         """Every hard rule as (what breaks it, mask of candidates that keep it), in order."""
         width, depth, height = size3
-        polys = shapely.polygons(_corners(xs, ys, yaw, width, depth))
+        polys = shapely.polygons(corners(xs, ys, yaw, width, depth))
         room = self.polygon.buffer(1e-7)
         rules = [(f"outside room {self.room.id!r}", np.asarray(shapely.covers(room, polys)))]
         for thing in self.things:
@@ -344,7 +261,9 @@ class RoomFloor:
     def _walk_problems(self, prep: PreparedRoom, poly: Polygon) -> list[str]:
         walk = self._walk
         if walk is None or walk.prep is not prep:
-            walk = self._walk = _Walk(self, prep)
+            walk = self._walk = FloorWalk(
+                self.polygon, [t.polygon.bounds for t in self.things if t.on_floor], prep
+            )
         return walk.problems(poly)
 
     # ------------------------------------------------------------------ search
@@ -374,7 +293,7 @@ class RoomFloor:
         broken: Counter[str] = Counter()
         for yaw in yaws:
             k = geo.yaw_index(yaw)
-            hx, hy = _half(width, depth, yaw)
+            hx, hy = turned_half_extents(width, depth, yaw)
             gx = np.arange(
                 math.ceil((minx + hx) / STEP_M - 1e-9), math.floor((maxx - hx) / STEP_M + 1e-9) + 1
             )
@@ -397,7 +316,7 @@ class RoomFloor:
                 continue
             score = np.zeros(len(xs))
             for c in prep.constraints:
-                score += c.weight * _holds(prep, c, xs, ys, k, new, poses)
+                score += c.weight * constraint_holds(prep, c, xs, ys, k, new, poses)
             second = self._secondary(prep, xs, ys, yaw, size3, wishes, near)
             rows.extend(
                 (-round(float(s), 6), round(float(d), 6), k, float(x), float(y), yaw)
@@ -436,7 +355,7 @@ class RoomFloor:
                 else:
                     out += np.hypot(dx, dy)
                 used = True
-            elif wish.kind in _OPENING_KINDS:
+            elif wish.kind in OPENING_KINDS:
                 spans = prep.anchors.doors if "door" in wish.kind else prep.anchors.windows
                 if spans:
                     out += np.min([np.hypot(xs - o.center[0], ys - o.center[1]) for o in spans], 0)
@@ -444,7 +363,7 @@ class RoomFloor:
         if used or any(w.kind == "middle" for w in wishes):
             return out
         width, depth, _ = size3
-        polys = shapely.polygons(_corners(xs, ys, yaw, width, depth))
+        polys = shapely.polygons(corners(xs, ys, yaw, width, depth))
         return np.asarray(shapely.distance(self.polygon.exterior, polys))
 
     def _verdicts(self, prep, new, poses, x, y, yaw) -> list[dict[str, object]]:
@@ -475,109 +394,3 @@ class RoomFloor:
             for k, t in enumerate(self.things)
         }
         return self._verdicts(prep, prep.index[NEW], poses, x, y, yaw_deg)
-
-
-class _Walk:
-    """The walkway between doors and the reachable floor of a room, with its objects held."""
-
-    def __init__(self, floor: RoomFloor, prep: PreparedRoom) -> None:
-        self.prep = prep
-        self.rects = [t.polygon.bounds for t in floor.things if t.on_floor]
-        self.walk_ok = prep.walk.check(self.rects).ok
-        self.raster = geo.Raster.around(floor.polygon, NAV_CELL_M)
-        self.base = geo.free_walk_mask(floor.polygon, self.rects, self.raster, NAV_RADIUS_M)
-        self.xs, self.ys = self.raster.centres()
-        seeds = np.zeros_like(self.base)
-        for zone in prep.door_zones:
-            seeds |= np.asarray(shapely.contains_xy(zone, self.xs, self.ys), dtype=bool)
-        self.seeds = seeds
-        self.reach = self._reach(self.base)
-
-    def _reach(self, free: np.ndarray) -> np.ndarray:
-        labels, _ = ndimage.label(free)
-        found = set(np.unique(labels[free & self.seeds]).tolist()) - {0}
-        return np.isin(labels, list(found)) & free
-
-    def problems(self, poly: Polygon) -> list[str]:
-        rect = poly.bounds
-        if self.walk_ok and not self.prep.walk.check([*self.rects, rect]).ok:
-            return ["blocks the way between the doors"]
-        if not self.seeds.any():
-            return []
-        free = geo.clear_of(self.base, self.xs, self.ys, [rect], NAV_RADIUS_M)
-        reach = self._reach(free)
-        lost = float((self.reach & free & ~reach).sum()) * NAV_CELL_M**2
-        if lost > LOST_FLOOR_M2:
-            return [f"cuts {lost:.2f} m² of floor off from the doors"]
-        xmin, ymin, xmax, ymax = rect
-        dx = np.maximum(np.maximum(xmin - self.xs, self.xs - xmax), 0.0)
-        dy = np.maximum(np.maximum(ymin - self.ys, self.ys - ymax), 0.0)
-        close = np.hypot(dx, dy) <= NAV_RADIUS_M + REACH_M + NAV_CELL_M
-        if not (reach & close).any():
-            return ["cannot be reached from a door"]
-        return []
-
-
-def _holds(
-    prep: PreparedRoom,
-    c: Constraint,
-    xs: np.ndarray,
-    ys: np.ndarray,
-    k: int,
-    new: int,
-    poses: dict[int, tuple[float, float, int]],
-) -> np.ndarray:
-    """Whether constraint ``c`` on the new object holds at each candidate centre."""
-    item = prep.items[new]
-    th = prep.thresholds
-    if c.kind == "edge":
-        return np.asarray(geo.edge_holds(xs, ys, k, item.size, prep.walls, th.edge_tolerance))
-    if c.kind in PLACE_KINDS:
-        return np.asarray(
-            place_holds(c.kind, xs, ys, k, item.size, prep.anchors, th.edge_tolerance)
-        )
-    if c.kind == "middle":
-        hx, hy = geo.half_extents(item.width, item.depth, k)
-        boxes = shapely.box(xs - hx, ys - hy, xs + hx, ys + hy)
-        return np.asarray(shapely.distance(prep.room.exterior, boxes)) >= th.middle_gap - geo.EPS
-    assert c.target is not None  # a relation's target is checked when the wish is made
-    j = prep.index[c.target]
-    xt, yt, kt = poses[j]
-    target = prep.items[j]
-    return np.asarray(
-        geo.relation_holds(c.kind, xs, ys, k, item.size, xt, yt, kt, target.size, th), dtype=bool
-    )
-
-
-def _on_edge(
-    ring: Sequence[Sequence[float]], xy: Sequence[float], width: float, least: float
-) -> tuple[tuple[float, float], float]:
-    """An opening at ``xy`` moved onto the nearest edge of the layout polygon ``ring``, as wide
-    as it is but no wider than that edge (the inset edge is shorter than the wall: an opening
-    as wide as its wall is clipped by the inset)."""
-    best: tuple[float, float, float, float, float, float, float] | None = None
-    for i in range(len(ring)):
-        (ax, ay), (bx, by) = ring[i], ring[(i + 1) % len(ring)]
-        length = math.hypot(bx - ax, by - ay)
-        if length < 1e-9:
-            continue
-        tx, ty = (bx - ax) / length, (by - ay) / length
-        t = min(max((xy[0] - ax) * tx + (xy[1] - ay) * ty, 0.0), length)
-        dist = math.hypot(ax + tx * t - xy[0], ay + ty * t - xy[1])
-        if best is None or dist < best[0]:
-            best = (dist, ax, ay, tx, ty, t, length)
-    assert best is not None  # a polygon has edges
-    _, ax, ay, tx, ty, t, length = best
-    span = max(min(width, length - 2e-3), least)
-    t = min(max(t, span / 2), max(length - span / 2, span / 2))
-    return (round(ax + tx * t, 6), round(ay + ty * t, 6)), span
-
-
-def _half(width: float, depth: float, yaw: float) -> tuple[float, float]:
-    """Half extents along x and y of a footprint turned by ``yaw``."""
-    c, s = abs(math.cos(math.radians(yaw))), abs(math.sin(math.radians(yaw)))
-    return depth / 2 * c + width / 2 * s, depth / 2 * s + width / 2 * c
-
-
-def _bounded(value: float) -> float:
-    return min(max(value, 0.011), 9.99)

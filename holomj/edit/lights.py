@@ -12,17 +12,12 @@ from __future__ import annotations
 
 from typing import Any
 
+from holomj.edit.choice import choose_asset
 from holomj.edit.describe import describe
-from holomj.edit.floor import room_at
-from holomj.edit.objects import (
-    add,
-    ceiling_spot,
-    kind_of,
-    new_id,
-    replace,
-    retrieve,
-    room_of,
-)
+from holomj.edit.footprints import room_at
+from holomj.edit.lookup import kind_of, new_id, room_of
+from holomj.edit.objects import add, replace
+from holomj.edit.placing import ceiling_spot
 from holomj.edit.state import Change, EditContext, Refused, find, rebuilt, with_objects
 from holomj.spec.decor import LIGHT_BELOW_FIXTURE_M, LIGHT_FIXTURE_CATEGORIES
 from holomj.spec.edit import AddOp, EditRelation, LightOp, ReplaceOp
@@ -61,7 +56,7 @@ def _change_light(scene: SceneSpec, op: LightOp, source: Light) -> Change:
         raise Refused("nothing to change: give position, energy, color or kind")
     lights = [li.model_copy(update=update) if li.id == source.id else li for li in scene.lights]
     new_scene = rebuilt(scene, lights=lights)
-    return Change(new_scene, changed=[op.id], details={"light": op.id, **update})
+    return Change(new_scene, changed=[source.id], details={"light": source.id, **update})
 
 
 def _change_fixture(scene: SceneSpec, op: LightOp, ctx: EditContext, index: int) -> Change:
@@ -133,11 +128,10 @@ def _add_fixture(scene: SceneSpec, op: LightOp, ctx: EditContext, index: int) ->
             index,
         )  # fmt: skip
     oid = new_id(scene, room_id, asked.name, None)
-    asset_id, pick = retrieve(
+    asset_id, meta, pick = choose_asset(
         ctx, asked, attributes=[], category=asked.category, size=asked.size,
-        placement="ceiling", key=("light", index),
+        placement="ceiling", key=("light", index), refuse_absurd=False,
     )  # fmt: skip
-    meta = ctx.library.get(asset_id).meta
     x, y, z = ceiling_spot(scene, room_id, meta.size, ctx.library, at=op.position, above=op.above)
     obj = SceneObject(id=oid, asset=asset_id, position=(x, y, z), static=True, room=room_id)
     objects = [*scene.objects, obj]

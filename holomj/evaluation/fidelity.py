@@ -30,12 +30,11 @@ or one made from a plan by :mod:`holomj.evaluation.plan_spec`).
 
 from __future__ import annotations
 
-import math
 import re
 from pathlib import Path
 from typing import Any
 
-from holomj.evaluation import relations as rel_
+from holomj.evaluation import quantified as quantified_
 from holomj.evaluation.attributes import object_colours, object_has_shape, object_materials
 from holomj.evaluation.folder import Scene
 from holomj.evaluation.objects import SceneObject, SceneRoom
@@ -148,8 +147,8 @@ class Scorer:
                 }
             )
         for spec in self.spec.get("objects", []):
-            found = self.instances(spec["name"], spec.get("room"), spec)
-            n = len(found)
+            objects = self.instances(spec["name"], spec.get("room"), spec)
+            n = len(objects)
             where = f" in {spec.get('room_id') or spec['room']}" if spec.get("room") else ""
             out.append(
                 {
@@ -158,7 +157,7 @@ class Scorer:
                     "name": spec["name"],
                     "found": n,
                     "held": self._count_ok(spec["count"], n),
-                    "reason": f"{n} found{where} ({', '.join(o.id for o in found[:8])}), "
+                    "reason": f"{n} found{where} ({', '.join(o.id for o in objects[:8])}), "
                     f"expected {self._count_text(spec['count'])}",
                 }
             )
@@ -216,33 +215,17 @@ class Scorer:
             )
         target = rel.get("object")
         tnorm = normalise(target) if isinstance(target, str) else None
-        quant = rel.get("quantifier", "any")
         if kind == "around":
-            return self._around(subjects, rel)
-        per: list[tuple[SceneObject, bool, str]] = []
-        if kind in ("against wall", "in corner", "middle") or tnorm in ("wall", "walls"):
-            for s in subjects:
-                if kind == "in corner":
-                    ok, why = rel_.in_corner(self.scene, s)
-                elif kind == "middle":
-                    ok, why = rel_.middle(self.scene, s)
-                elif kind == "against wall":
-                    ok, why = rel_.against_wall(self.scene, s)
-                elif kind in ("near", "next to"):
-                    wall = rel_.wall_side(self.scene, s)
-                    dist = wall[0] if wall else math.inf
-                    limit = rel_.NEAR_M if kind == "near" else rel_.NEXT_TO_M
-                    ok, why = dist < limit, f"{dist:.2f} m from the nearest wall"
-                else:
-                    ok, why = rel_.against_wall(self.scene, s)
-                per.append((s, ok, why))
-        elif tnorm in ("window", "windows", "door", "doors", "entrance", "door entrance"):
-            ops = self.scene.windows if tnorm.startswith("window") else self.scene.doors
-            for s in subjects:
-                mine = [op for op in ops if not op.rooms or s.room in op.rooms] or []
-                hit = [op.id for op in mine if rel_.opening_relation(kind, s, op)]
-                why = f"{kind} {hit[0]}" if hit else f"{kind} none of {len(mine)} {tnorm}(s)"
-                per.append((s, bool(hit), why))
+            seats_at = self.instances(
+                target or "", rel.get("room"), self._plan_entry(target or "", room_id)
+            )
+            if not seats_at:
+                return Verdict(False, f"no {target} in the scene")
+            return quantified_.around(subjects, seats_at)
+        if kind in quantified_.PLACE_RELATIONS or tnorm in quantified_.WALL_WORDS:
+            per = quantified_.by_place(self.scene, kind, subjects)
+        elif tnorm is not None and tnorm in quantified_.OPENING_WORDS:
+            per = quantified_.by_opening(self.scene, kind, subjects, tnorm)
         else:
             if not target:
                 return Verdict(False, f"relation {kind!r} needs an object")
@@ -251,50 +234,14 @@ class Scorer:
             )
             if not objects:
                 return Verdict(False, f"no {target} in the scene")
-            for s in subjects:
-                hit = [
-                    o.id
-                    for o in objects
-                    if o.id != s.id
-                    and rel_.same_room(s, o)
-                    and rel_.pair_relation(self.scene, kind, s, o)
-                ]
-                per.append((s, bool(hit), f"with {hit[0]}" if hit else f"with none of {target}"))
-        n_ok = sum(1 for _, ok, _ in per if ok)
-        need = {"all": len(per), "most": math.ceil(rel_.MOST * len(per))}.get(quant, 1)
-        held = n_ok >= need
-        detail = "; ".join(f"{s.id}: {why}" for s, _, why in per[:6])
-        return Verdict(held, f"{n_ok}/{len(per)} {rel['subject']} ({quant}): {detail}")
+            per = quantified_.by_object(self.scene, kind, subjects, objects, target)
+        return quantified_.quantified(per, rel.get("quantifier", "any"), rel["subject"])
 
     def _plan_entry(self, name: str, room_id: str | None) -> dict[str, Any] | None:
         """The entry of ``name`` when it carries what a plan knows (ids, categories, room)."""
         entry = self.entry(name, room_id)
         keys = ("id_stem", "categories", "room_id")
         return entry if entry is not None and any(entry.get(k) for k in keys) else None
-
-    def _around(self, subjects: list[SceneObject], rel: dict[str, Any]) -> Verdict:
-        target = rel.get("object") or ""
-        objects = self.instances(
-            target, rel.get("room"), self._plan_entry(target, rel.get("room_id"))
-        )
-        if not objects:
-            return Verdict(False, f"no {rel.get('object')} in the scene")
-        best = (0, 0, "")
-        for o in objects:
-            close = [
-                s for s in subjects if rel_.same_room(s, o) and s.fp.distance(o.fp) <= rel_.AROUND_M
-            ]
-            peers = [s for s in subjects if rel_.same_room(s, o)]
-            sides = len(rel_.sides_of(o, close))
-            ok = len(close) >= max(2, math.ceil(rel_.MOST * len(peers))) and sides >= 2
-            if ok:
-                return Verdict(True, f"{len(close)}/{len(peers)} around {o.id} on {sides} sides")
-            if len(close) > best[0]:
-                best = (len(close), sides, o.id)
-        return Verdict(
-            False,
-            f"at most {best[0]}/{len(subjects)} within {rel_.AROUND_M} m of {best[2] or '-'}",
-        )
 
     def relations(self) -> list[dict[str, Any]]:
         """Every relation spec with its verdict."""

@@ -31,30 +31,14 @@ from typing import TYPE_CHECKING, Any
 
 from holomj.evaluation.text import find_words, main_phrase, normalise, slug
 from holomj.evaluation.vocabulary import Vocabulary
+from holomj.spec.relations import RELATION_KINDS
 
 if TYPE_CHECKING:
-    from holomj.spec.plan import PlanObject, PlanRoom, ScenePlan
+    from holomj.spec.plan import PlanObject, PlanRelation, PlanRoom, ScenePlan
 
 # plan relation kind -> (annotation relation, target place or None for the plan's target)
 RELATION_MAP: dict[str, tuple[str, str | None]] = {
-    "corner": ("in corner", ""),
-    "wall": ("against wall", "wall"),
-    "middle": ("middle", ""),
-    "under_window": ("under window", "window"),
-    "by_window": ("next to", "window"),
-    "by_door": ("near", "door"),
-    "facing_window": ("facing", "window"),
-    "facing_door": ("facing", "door"),
-    "adjacent_to": ("next to", None),
-    "both_sides": ("next to", None),
-    "near": ("near", None),
-    "in_front_of": ("in front of", None),
-    "behind": ("behind", None),
-    "facing": ("facing", None),
-    "across_from": ("across from", None),
-    "around": ("around", None),
-    "on": ("on", None),
-    "above": ("above", None),
+    f.kind: f.judged_as for f in RELATION_KINDS if f.judged_as is not None
 }
 ATTRIBUTE_GAP_WORDS = 3  # "a red leather armchair": the word at most this many words before
 
@@ -79,27 +63,11 @@ def spec_from_plan(plan: ScenePlan, vocab: Vocabulary, *, own: bool) -> dict[str
                 asked_types.add(room.type)
             _add(counted if asked else references, merged, entry, own)
         for rel in room.relations:
-            mapped = RELATION_MAP.get(rel.kind)
-            if mapped is None:
+            judged = _relation_entry(room, rel, own)
+            if judged is None:
                 skipped.append(f"{room.id}: {rel.subject} {rel.kind} {rel.target or ''}".strip())
-                continue
-            kind, place = mapped
-            quantifier = "all"
-            if rel.kind == "around":
-                kind, quantifier = _around(room, rel.subject, rel.target)
-            entry: dict[str, Any] = {
-                "subject": rel.subject,
-                "relation": kind,
-                "object": rel.target if place is None else (place or None),
-                "quantifier": quantifier,
-                "room": room.type,
-                "plan_kind": rel.kind,
-            }
-            if rel.phrase:
-                entry["phrase"] = rel.phrase
-            if own:
-                entry["room_id"] = room.id
-            relations.append(entry)
+            else:
+                relations.append(judged)
     spec: dict[str, Any] = {"id": "plan", "prompt": plan.prompt, "scene_type": plan.scene_type}
     if own:
         types: dict[str, int] = defaultdict(int)
@@ -113,6 +81,30 @@ def spec_from_plan(plan: ScenePlan, vocab: Vocabulary, *, own: bool) -> dict[str
         spec["room_types"] = [{"type": t, "count": {"ge": 1}} for t in sorted(asked_types)]
     spec.update(objects=counted, references=references, relations=relations, skipped=skipped)
     return spec
+
+
+def _relation_entry(room: PlanRoom, rel: PlanRelation, own: bool) -> dict[str, Any] | None:
+    """The annotation relation a plan relation is judged as (None: no geometric test)."""
+    mapped = RELATION_MAP.get(rel.kind)
+    if mapped is None:
+        return None
+    kind, place = mapped
+    quantifier = "all"
+    if rel.kind == "around":
+        kind, quantifier = _around(room, rel.subject, rel.target)
+    entry: dict[str, Any] = {
+        "subject": rel.subject,
+        "relation": kind,
+        "object": rel.target if place is None else (place or None),
+        "quantifier": quantifier,
+        "room": room.type,
+        "plan_kind": rel.kind,
+    }
+    if rel.phrase:
+        entry["phrase"] = rel.phrase
+    if own:
+        entry["room_id"] = room.id
+    return entry
 
 
 def _around(room: PlanRoom, subject: str, target: str | None) -> tuple[str, str]:

@@ -176,25 +176,7 @@ def evaluate_scene(
         timings[name] = round(now - clock, 3)
         clock = now
 
-    scorer = Scorer(scene.folder, spec or {}, vocab, scene=scene)
-    if spec is not None:
-        for key, rows, what in (
-            ("counts", scorer.counts(), "counts met"),
-            ("attributes", scorer.attributes(), "attributes met"),
-            ("relations", scorer.relations(), "relations met"),
-            ("absent", scorer.absent(), "excluded things absent"),
-        ):
-            details[key], scores[key] = rows, _rows(rows, what)
-        notes += [f"relation not measured: {skipped}" for skipped in spec.get("skipped", [])]
-    else:
-        for key in ("counts", "attributes", "relations", "absent"):
-            scores[key] = {
-                "score": None,
-                "ok": None,
-                "summary": "no plan or spec to measure against",
-            }
-    details["defining"] = scorer.defining()
-    scores["defining"] = _rows(details["defining"], "typed rooms with their defining furniture")
+    _fidelity(Scorer(scene.folder, spec or {}, vocab, scene=scene), spec, scores, details, notes)
     lap("fidelity")
 
     details["collisions"] = collision_summary(
@@ -218,15 +200,7 @@ def evaluate_scene(
     details["navigability"], scores["navigability"] = _navigability(grid)
     lap("navigability")
 
-    resting = {s.id: s.rests_on for s in rests}
-    details["front_access"] = front_access(scene, vocab, grid, resting)
-    scores["front_access"] = _rows(details["front_access"], "fronts reachable")
-    details["doors"] = door_clearance(scene, OPEN_PASSAGE_M)
-    details["windows"] = window_clearance(scene, vocab)
-    doors_clear = sum(1 for d in details["doors"] if d["clear"])
-    windows_clear = sum(1 for w in details["windows"] if w["clear"])
-    scores["doors_clear"] = _share(doors_clear, len(details["doors"]), "doors clear")
-    scores["windows_clear"] = _share(windows_clear, len(details["windows"]), "windows clear")
+    _access(scene, vocab, grid, {s.id: s.rests_on for s in rests}, scores, details)
     lap("access_openings")
 
     details["stability"] = stability_summary(stability_report, stability_source)
@@ -241,6 +215,54 @@ def evaluate_scene(
         n_objects=len(scene.objects),
         rooms=[{"id": r.id, "type": r.type, "as": vocab.room_type_of(r)} for r in scene.rooms],
     )
+
+
+def _fidelity(
+    scorer: Scorer,
+    spec: dict[str, Any] | None,
+    scores: dict[str, dict[str, Any]],
+    details: dict[str, Any],
+    notes: list[str],
+) -> None:
+    """Counts, attributes, relations and absent things against ``spec`` (none without one),
+    and the typed rooms' defining furniture, into ``scores`` and ``details``."""
+    if spec is not None:
+        for key, rows, what in (
+            ("counts", scorer.counts(), "counts met"),
+            ("attributes", scorer.attributes(), "attributes met"),
+            ("relations", scorer.relations(), "relations met"),
+            ("absent", scorer.absent(), "excluded things absent"),
+        ):
+            details[key], scores[key] = rows, _rows(rows, what)
+        notes += [f"relation not measured: {skipped}" for skipped in spec.get("skipped", [])]
+    else:
+        for key in ("counts", "attributes", "relations", "absent"):
+            scores[key] = {
+                "score": None,
+                "ok": None,
+                "summary": "no plan or spec to measure against",
+            }
+    details["defining"] = scorer.defining()
+    scores["defining"] = _rows(details["defining"], "typed rooms with their defining furniture")
+
+
+def _access(
+    scene: Scene,
+    vocab: Vocabulary,
+    grid: ReachGrid | None,
+    resting: dict[str, str | None],
+    scores: dict[str, dict[str, Any]],
+    details: dict[str, Any],
+) -> None:
+    """Reachable fronts and clear doors and windows, into ``scores`` and ``details``."""
+    details["front_access"] = front_access(scene, vocab, grid, resting)
+    scores["front_access"] = _rows(details["front_access"], "fronts reachable")
+    details["doors"] = door_clearance(scene, OPEN_PASSAGE_M)
+    details["windows"] = window_clearance(scene, vocab)
+    doors_clear = sum(1 for d in details["doors"] if d["clear"])
+    windows_clear = sum(1 for w in details["windows"] if w["clear"])
+    scores["doors_clear"] = _share(doors_clear, len(details["doors"]), "doors clear")
+    scores["windows_clear"] = _share(windows_clear, len(details["windows"]), "windows clear")
 
 
 def _collision_score(collisions: dict[str, Any], n_objects: int) -> dict[str, Any]:

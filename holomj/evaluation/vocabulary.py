@@ -19,7 +19,7 @@ if TYPE_CHECKING:
 
 def default_vocabulary_file() -> Path:
     """The shipped vocabulary file."""
-    return Path(str(resources.files("holomj.data").joinpath("evaluation", "vocabulary.json")))
+    return Path(str(resources.files("holomj.data").joinpath("evaluation/vocabulary.json")))
 
 
 class Vocabulary:
@@ -66,11 +66,7 @@ class Vocabulary:
 
     def canonical(self, name: str) -> str | None:
         """The vocabulary entry ``name`` (or a singular form of it) belongs to, if any."""
-        key = normalise(name)
-        for cand in [key, *singular_forms(key)]:
-            if cand in self.lookup:
-                return self.lookup[cand]
-        return None
+        return _looked_up(self.lookup, name)
 
     def resolve(self, name: str) -> set[str]:
         """The scene categories that count as ``name``."""
@@ -82,11 +78,7 @@ class Vocabulary:
 
     def room_canonical(self, name: str) -> str | None:
         """The canonical room type of an annotation's room name, if the vocabulary knows it."""
-        key = normalise(name)
-        for cand in [key, *singular_forms(key)]:
-            if cand in self.room_lookup:
-                return self.room_lookup[cand]
-        return None
+        return _looked_up(self.room_lookup, name)
 
     def room_type_of(self, room: SceneRoom) -> str | None:
         """The first canonical room type of a scene room: by its ``type``, else its id's stem."""
@@ -110,3 +102,12 @@ class Vocabulary:
     def material_words(self, text: str) -> set[str]:
         """Material families named in ``text``."""
         return {self.materials[w] for w in find_words(text, self.materials)}
+
+
+def _looked_up(lookup: dict[str, str], name: str) -> str | None:
+    """The entry of ``lookup`` that ``name`` (normalised), or a singular form of it, names."""
+    key = normalise(name)
+    for cand in [key, *singular_forms(key)]:
+        if cand in lookup:
+            return lookup[cand]
+    return None

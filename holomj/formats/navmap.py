@@ -19,15 +19,13 @@ from __future__ import annotations
 
 import io
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 from PIL import Image
 
 from holomj.errors import FormatError
-from holomj.mjcf.compiler import CompiledScene
-from holomj.robots.occupancy import DEFAULT_CELL_M, DEFAULT_Z_BAND, FloorGrid, build_floor_grid
-from holomj.robots.reach import DEFAULT_AGENT_RADIUS_M, Reach, compute_reach
+from holomj.spec.robot import RobotRecord
 
 NAVMAP_JSON = "navmap.json"
 NAVMAP_PNG = "navmap.png"
@@ -51,6 +49,53 @@ COLOURS = {
 ENTRANCE_COLOUR = (40, 170, 80)
 ROBOT_COLOUR = (50, 100, 220)
 MIN_IMAGE_PX = 480
+
+
+class FloorGrid(Protocol):
+    """The free-floor grid of a scene (what :class:`holomj.robots.occupancy.FloorGrid` holds)."""
+
+    @property
+    def origin(self) -> tuple[float, float]: ...
+    @property
+    def cell(self) -> float: ...
+    @property
+    def room_ids(self) -> list[str]: ...
+    @property
+    def room_index(self) -> np.ndarray: ...
+    @property
+    def blocked(self) -> np.ndarray: ...
+    @property
+    def leaves(self) -> np.ndarray: ...
+    @property
+    def shape(self) -> tuple[int, int]: ...
+    @property
+    def inside(self) -> np.ndarray: ...
+    def centres(self) -> tuple[np.ndarray, np.ndarray]: ...
+
+
+class Entrance(Protocol):
+    """Where the house is entered (what :class:`holomj.robots.reach.Entrance` holds)."""
+
+    @property
+    def room(self) -> str | None: ...
+    @property
+    def door(self) -> str | None: ...
+    @property
+    def position(self) -> tuple[float, float] | None: ...
+
+
+class Reach(Protocol):
+    """Reachability on a floor grid (what :class:`holomj.robots.reach.Reach` holds)."""
+
+    @property
+    def agent_radius(self) -> float: ...
+    @property
+    def entrance(self) -> Entrance: ...
+    @property
+    def walkable(self) -> np.ndarray: ...
+    @property
+    def reachable(self) -> np.ndarray: ...
+    def room_stats(self) -> dict[str, dict[str, float | bool]]: ...
 
 
 @dataclass
@@ -123,24 +168,19 @@ class NavMap:
         return buffer.getvalue()
 
 
-def build_navmap(
-    compiled: CompiledScene,
-    *,
-    agent_radius: float = DEFAULT_AGENT_RADIUS_M,
-    cell: float = DEFAULT_CELL_M,
-    z_band: tuple[float, float] = DEFAULT_Z_BAND,
+def navmap_of(
+    grid: FloorGrid, reach: Reach, z_band: tuple[float, float], robot: RobotRecord | None
 ) -> NavMap:
-    """The navigation map of a compiled scene at its initial pose (robot included)."""
-    grid = build_floor_grid(compiled.model, compiled.scene, cell=cell, z_band=z_band)
-    reach = compute_reach(grid, compiled.scene, agent_radius)
-    robot = None
-    if compiled.robot is not None:
-        robot = {
-            "position": list(compiled.robot.position),
-            "yaw_deg": compiled.robot.yaw_deg,
-            "footprint_radius_m": compiled.robot.footprint.radius_m,
+    """The navigation map of a scene's floor ``grid`` and ``reach`` (computed for the objects
+    between the heights ``z_band``), with the scene's robot marked when it has one."""
+    marker = None
+    if robot is not None:
+        marker = {
+            "position": list(robot.position),
+            "yaw_deg": robot.yaw_deg,
+            "footprint_radius_m": robot.footprint.radius_m,
         }
-    return NavMap(grid, reach, z_band, robot)
+    return NavMap(grid, reach, z_band, marker)
 
 
 def rle_encode(values: np.ndarray) -> list[list[int]]:

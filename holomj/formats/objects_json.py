@@ -31,6 +31,7 @@ carcass), its body and the joints to open to reach them. Both lists are empty fo
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import mujoco
@@ -39,18 +40,21 @@ import numpy as np
 from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene
 from holomj.physics.surfaces_world import object_yaw, world_surfaces
-from holomj.robots import shapes
-from holomj.robots.attach import MOUNT_BODY
 from holomj.spec.robot import ROBOT_PREFIX
 from holomj.spec.walls import room_polygon
 
 OBJECTS_JSON = "objects.json"
 OBJECTS_SCHEMA_VERSION = "1.0"
 _DIGITS = 6
+# (model, data, geom) -> world points whose convex hull holds the geom (holomj.robots.shapes)
+GeomPoints = Callable[[mujoco.MjModel, mujoco.MjData, int], np.ndarray]
 
 
-def objects_record(compiled: CompiledScene) -> dict[str, Any]:
-    """The ``objects.json`` data of a compiled scene."""
+def objects_record(
+    compiled: CompiledScene, *, geom_points: GeomPoints, robot_base_body: str
+) -> dict[str, Any]:
+    """The ``objects.json`` data of a compiled scene; ``geom_points`` outlines a geom (for the
+    bounding boxes), ``robot_base_body`` names the body a robot is mounted on."""
     model = compiled.model
     data = mujoco.MjData(model)
     mujoco.mj_kinematics(model, data)
@@ -67,13 +71,15 @@ def objects_record(compiled: CompiledScene) -> dict[str, Any]:
             }
             for room in scene.rooms
         ],
-        "objects": [_object(compiled, data, obj) for obj in scene.objects],
+        "objects": [_object(compiled, data, obj, geom_points) for obj in scene.objects],
         "doors": [_door(model, data, door) for door in scene.doors],
-        "robot": _robot(compiled, data),
+        "robot": _robot(compiled, data, robot_base_body),
     }
 
 
-def _object(compiled: CompiledScene, data: mujoco.MjData, obj: Any) -> dict[str, Any]:
+def _object(
+    compiled: CompiledScene, data: mujoco.MjData, obj: Any, geom_points: GeomPoints
+) -> dict[str, Any]:
     model = compiled.model
     body = model.body(names.object_body(obj.id)).id
     asset = compiled.assets.get(obj.asset)
@@ -95,7 +101,7 @@ def _object(compiled: CompiledScene, data: mujoco.MjData, obj: Any) -> dict[str,
         parts = tuple(
             model.body(names.object_part_body(obj.id, p.name)).id for p in meta.articulation.parts
         )
-    low, high = _aabb(model, data, body, parts)
+    low, high = _aabb(model, data, geom_points, body, parts)
     joints, interior = _articulation(compiled, data, obj, meta)
     return {
         "id": obj.id,
@@ -187,14 +193,18 @@ def _articulation(
 
 
 def _aabb(
-    model: mujoco.MjModel, data: mujoco.MjData, body: int, parts: tuple[int, ...] = ()
+    model: mujoco.MjModel,
+    data: mujoco.MjData,
+    geom_points: GeomPoints,
+    body: int,
+    parts: tuple[int, ...] = (),
 ) -> tuple[np.ndarray, np.ndarray]:
     geoms = [
         g
         for b in (body, *parts)
         for g in range(model.body_geomadr[b], model.body_geomadr[b] + model.body_geomnum[b])
     ]
-    points = [shapes.world_points(model, data, g) for g in geoms]
+    points = [geom_points(model, data, g) for g in geoms]
     if not points:
         return data.xpos[body].copy(), data.xpos[body].copy()
     cloud = np.vstack(points)
@@ -228,7 +238,7 @@ def _door(model: mujoco.MjModel, data: mujoco.MjData, door: Any) -> dict[str, An
     }
 
 
-def _robot(compiled: CompiledScene, data: mujoco.MjData) -> dict[str, Any] | None:
+def _robot(compiled: CompiledScene, data: mujoco.MjData, base_body: str) -> dict[str, Any] | None:
     record = compiled.robot
     if record is None:
         return None
@@ -253,7 +263,7 @@ def _robot(compiled: CompiledScene, data: mujoco.MjData) -> dict[str, Any] | Non
         "position": list(record.position),
         "yaw_deg": record.yaw_deg,
         "room": record.room,
-        "base_body": MOUNT_BODY,
+        "base_body": base_body,
         "footprint_radius_m": record.footprint.radius_m,
         "joints": joints,
         "actuators": actuators,

@@ -52,7 +52,29 @@ def detect_format(data: Any, source: str = "input") -> Format:
         return "scenedef"
     if "schema_version" in data and rooms:
         return "holomj"
+    _refuse_old_thor_layout(data, objects, source)
     raise FormatError("not a format holomj knows", where=source, fix=_formats_hint())
+
+
+_OLD_THOR_KEYS = ("sceneName", "walls", "doors", "windows", "proceduralParameters", "agent")
+
+
+def _refuse_old_thor_layout(
+    data: dict[str, Any], objects: list[dict[str, Any]], source: str
+) -> None:
+    """An AI2-THOR layout from before ProcTHOR (iTHOR scene metadata, or a house without
+    rooms): refused in one line naming what holomj needs and it lacks."""
+    thor_objects = any("objectId" in o or "objectType" in o or "assetId" in o for o in objects)
+    if not (thor_objects or any(k in data for k in _OLD_THOR_KEYS)):
+        return
+    missing = "'rooms'" if "rooms" not in data else "'rooms[].floorPolygon'"
+    raise FormatError(
+        f"an AI2-THOR layout without {missing}: holomj builds a house from its rooms' floor "
+        "polygons, which this older layout does not give",
+        where=source,
+        fix="export the house in ProcTHOR's schema (rooms with floorPolygon, walls, doors, "
+        "windows, objects), or force a format with --format",
+    )
 
 
 def _formats_hint() -> str:

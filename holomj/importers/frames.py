@@ -17,6 +17,7 @@ Unity ``+z`` to Unity ``+x`` (clockwise seen from above), which is holomj ``+X``
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 Matrix = tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float]]
 
@@ -64,9 +65,14 @@ def _rot_z(deg: float) -> Matrix:
 
 
 def _mul(a: Matrix, b: Matrix) -> Matrix:
-    return tuple(  # type: ignore[return-value]
-        tuple(sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)) for i in range(3)
-    )
+    rows = [triple(sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)) for i in range(3)]
+    return (rows[0], rows[1], rows[2])
+
+
+def triple(values: Iterable[float]) -> tuple[float, float, float]:
+    """Exactly three values as a typed triple."""
+    x, y, z = values
+    return (x, y, z)
 
 
 _SWAP: Matrix = ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, 1.0, 0.0))
@@ -79,7 +85,7 @@ def unity_rotation_matrix(rx: float, ry: float, rz: float) -> Matrix:
 
 def apply(matrix: Matrix, vector: tuple[float, float, float]) -> tuple[float, float, float]:
     """``matrix @ vector``."""
-    return tuple(sum(matrix[i][k] * vector[k] for k in range(3)) for i in range(3))  # type: ignore[return-value]
+    return triple(sum(matrix[i][k] * vector[k] for k in range(3)) for i in range(3))
 
 
 def orientation_from_unity(rx: float, ry: float, rz: float) -> Matrix:

@@ -139,6 +139,11 @@ class Node:
             raise self.error(f"expected {length} numbers, got {len(items)}")
         return tuple(item.number(limit=limit) for item in items)
 
+    def vector3(self, *, limit: float = 1e6) -> tuple[float, float, float]:
+        """A list of exactly three numbers."""
+        x, y, z = self.vector(3, limit=limit)
+        return (x, y, z)
+
 
 def _kind(value: Any) -> str:
     if value is None:

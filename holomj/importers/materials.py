@@ -22,7 +22,9 @@ import re
 from functools import cache
 from importlib import resources
 
+from holomj.importers.frames import triple
 from holomj.importers.ids import sanitise
+from holomj.spec.categories import normalise_category
 from holomj.spec.materials import BUILTIN_MATERIALS, Material
 
 # (keywords, material): the first rule with a keyword found in the lower-cased name wins.
@@ -64,8 +66,8 @@ def procthor_entries() -> dict[str, Entry]:
         if isinstance(value, str):
             entries[name] = (value, None)
         elif isinstance(value, dict) and isinstance(value.get("rgba"), list):
-            rgba = tuple(float(c) for c in value["rgba"])
-            entries[name] = (value.get("like", ""), (*rgba, 1.0)[:4])  # type: ignore[assignment]
+            r, g, b, a = [*(float(c) for c in value["rgba"]), 1.0][:4]
+            entries[name] = (value.get("like", ""), (r, g, b, a))
     return {k: v for k, v in entries.items() if v[0] in BUILTIN_MATERIALS}
 
 
@@ -75,7 +77,7 @@ def procthor_table() -> dict[str, str]:
 
 
 def _key(name: str, drop_number: bool = False) -> str:
-    key = "".join(ch for ch in name.lower() if ch.isalnum())
+    key = normalise_category(name)
     return key.rstrip("0123456789") or key if drop_number else key
 
 
@@ -151,12 +153,12 @@ class MaterialResolver:
 
     def _resolve(self, name: str, rgb: tuple[float, ...] | None, where: str) -> str:
         if rgb is not None:
-            clamped = tuple(min(max(c, 0.0), 1.0) for c in rgb[:3])
+            clamped = triple(min(max(c, 0.0), 1.0) for c in rgb[:3])
             alpha = min(max(rgb[3], 0.0), 1.0) if len(rgb) > 3 else 1.0
             label = sanitise(name, "material") if name else "color"
             hexcode = "".join(f"{round(c * 255):02x}" for c in clamped)
             material_id = f"imported_{label}_{hexcode}"[:128]
-            self.scene_materials[material_id] = Material(rgba=(*clamped, alpha))  # type: ignore[arg-type]
+            self.scene_materials[material_id] = Material(rgba=(*clamped, alpha))
             return material_id
         if name in BUILTIN_MATERIALS:
             return name

@@ -28,7 +28,9 @@ Conventions (see :mod:`holomj.importers.frames`)
   depth)`` -> holomj ``(depth, width, height)`` in the object's own frame). The stand-in asset
   is then scaled to that box within the limits of :mod:`holomj.importers.substitute` (else a
   box of that size). Other assetIds: the THOR type spelled by the assetId or the id, with a
-  typical size (no scaling); Holodeck objects keep their ``object_name`` and footprint. Ids of
+  typical size (no scaling). Holodeck objects (Objaverse uids) stand in with a model of their
+  own kind at their authored size (:mod:`holomj.importers.object_kinds`); THOR's L- and
+  U-shaped countertops become counter runs (:mod:`holomj.importers.counter_shapes`). Ids of
   the 0.0.1 schema (``4|2|4``, ``small|4|1``) never name a category.
 * An object's ProcTHOR ``position`` is the centre of its bounding box; holomj wants the centre of
   the footprint at the bottom, so ``z = unity y - height / 2`` with the height of the asset used.
@@ -56,9 +58,7 @@ Conventions (see :mod:`holomj.importers.frames`)
 from __future__ import annotations
 
 import math
-import re
 from collections import Counter
-from dataclasses import dataclass
 from pathlib import PurePath
 from typing import Any
 
@@ -67,65 +67,21 @@ from shapely.geometry import Point, Polygon
 from holomj.errors import SpecError
 from holomj.importers.common import (
     build_model,
-    clamp_noise,
     light_kind,
-    snap_opening,
 )
-from holomj.importers.frames import (
-    is_tilted,
-    normalise_deg,
-    quat_from_unity,
-    unity_forward,
-    unity_point,
-    yaw_from_unity,
-)
+from holomj.importers.frames import unity_forward, unity_point
+from holomj.importers.holodeck_hints import HolodeckHints
+from holomj.importers.house_objects import HouseObjects
+from holomj.importers.house_openings import HouseOpenings, WallInfo
 from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
 from holomj.importers.result import ImportResult
-from holomj.importers.state import ImportState
-from holomj.importers.substitute import MIN_EXTENT, category_size, choose_asset
-from holomj.importers.thor_assets import (
-    thor_asset,
-    thor_category,
-    thor_stand_ins,
-    thor_type,
-    thor_type_opens,
-    thor_type_size,
-)
 from holomj.library.store import AssetLibrary
-from holomj.spec.scene import Door, Light, Room, SceneObject, Window
+from holomj.spec.scene import Light, Room, SceneObject
 from holomj.spec.walls import Wall, room_polygon
 
 IMPORT_WALL_THICKNESS = 0.05
 DEFAULT_WALL_HEIGHT = 2.7
-_DOUBLE_DOOR_WIDTH = 1.5
-_REST_TOL = 0.05  # metres: a bottom this close to a surface rests on it
-_TOP_CLEARANCE = 0.06  # openings must stay this far below the wall top
-_MAX_NOISE = 0.2  # metres of overflow we clamp (with a warning) rather than reject
-_INSTANCE_SUFFIX = re.compile(r"-\d+$")  # Holodeck instance numbers: "sofa-0"
-
-
-@dataclass(frozen=True)
-class _WallInfo:
-    start: tuple[float, float]
-    end: tuple[float, float]
-    top: float
-    room: str | None
-    material: tuple[str | None, tuple[float, ...] | None]
-    empty: bool
-    exterior: bool
-
-
-@dataclass
-class _Placed:
-    """What children need to know about their parent."""
-
-    id: str
-    room: str | None
-    src_top: float  # top in the source (metres, world z)
-    used_top: float  # top of the asset used
-    category: str = ""
-    substituted: bool = False
 
 
 def import_procthor(data: Any, library: AssetLibrary, source: str) -> ImportResult:
@@ -138,16 +94,17 @@ def import_procthor(data: Any, library: AssetLibrary, source: str) -> ImportResu
     return _ProcthorImport(data, library, source).run()
 
 
-class _ProcthorImport(ImportState):
+class _ProcthorImport(HouseObjects, HouseOpenings):
     def __init__(self, data: Any, library: AssetLibrary, source: str) -> None:
         super().__init__(data, library, source)
         self.room_shapes: list[tuple[str, Polygon]] = []
-        self.walls: dict[str, _WallInfo] = {}
+        self.walls: dict[str, WallInfo] = {}
         self.derived: list[Wall] = []
         self.spans: dict[str, list[tuple[float, float]]] = {}
         self.objects: list[SceneObject] = []
         self.wall_height = DEFAULT_WALL_HEIGHT
         self.holodeck = False
+        self.hints = HolodeckHints()
 
     # -- driver ----------------------------------------------------------------------------
     def run(self) -> ImportResult:
@@ -156,14 +113,16 @@ class _ProcthorImport(ImportState):
             raise self.root.get("rooms").error("a house needs at least one room")
         self._check_ids()
         self.holodeck = self._looks_like_holodeck(room_nodes)
+        if self.holodeck:
+            self.hints = HolodeckHints.read(self.root.value)
         self._read_walls()
         self.wall_height = self._wall_height()
         self._read_rooms(room_nodes)
         self.derived = self.derive_walls()
-        doors = self._read_openings("doors")
-        windows = self._read_openings("windows")
-        doors += self._open_walls()
-        self._read_objects()
+        doors = self.read_openings("doors")
+        windows = self.read_openings("windows")
+        doors += self.open_walls()
+        self.read_objects()
         lights = self._read_lights()
         fields = {
             "name": sanitise(PurePath(self.source).stem, "scene")[:128],
@@ -211,7 +170,7 @@ class _ProcthorImport(ImportState):
             start = (coords[0][0], coords[0][2])
             end = max(((c[0], c[2]) for c in coords), key=lambda q: math.dist(q, start))
             room = node.str_("roomId", None)
-            self.walls[wall_id] = _WallInfo(
+            self.walls[wall_id] = WallInfo(
                 start=start,
                 end=end,
                 top=max(c[1] for c in coords),
@@ -290,287 +249,13 @@ class _ProcthorImport(ImportState):
             name, rgb, "ceiling_default", "proceduralParameters.ceilingMaterial"
         )
 
-    def _room_at(self, x: float, y: float) -> str | None:
+    def room_at(self, x: float, y: float) -> str | None:
+        """The first room whose floor covers the point."""
         point = Point(x, y)
         for room_id, shape in self.room_shapes:
             if shape.covers(point):
                 return room_id
         return None
-
-    # -- doors and windows -----------------------------------------------------------------
-    def _read_openings(self, kind: str) -> list[Any]:
-        nodes = self.root.opt(kind)
-        if nodes is None:
-            return []
-        return [self._opening(node, kind, i) for i, node in enumerate(nodes.items())]
-
-    def _opening(self, node: Node, kind: str, index: int) -> Door | Window:
-        path = f"{kind}[{index}]"
-        node.dict()
-        raw_id = node.str_("id", None)
-        asset = node.str_("assetId", "")
-        x0, x1, y0, y1 = _hole(node)
-        wall_name = node.str_("wall0")
-        wall = self.walls.get(wall_name)
-        if wall is None:
-            raise node.get("wall0").error(
-                f"unknown wall {wall_name!r}", fix="wall0 must be the id of one of 'walls'"
-            )
-        rooms = self._opening_rooms(node, wall)
-        length = math.dist(wall.start, wall.end)
-        if length < 1e-6:
-            raise node.get("wall0").error(f"wall {wall_name!r} has zero length")
-        t = (x0 + x1) / 2
-        ux, uy = ((wall.end[0] - wall.start[0]) / length, (wall.end[1] - wall.start[1]) / length)
-        centre = (wall.start[0] + ux * t, wall.start[1] + uy * t)
-        width = round(x1 - x0, 6)
-        try:
-            position, placed_wall, along = snap_opening(self.derived, rooms, centre, width)
-        except SpecError as err:
-            raise err.located(f"{self.source}: {path}") from None
-        self.spans.setdefault(placed_wall.id, []).append((along - width / 2, along + width / 2))
-        opening_id = self.opening_ids.new(
-            raw_id or f"{kind[:-1]}_{index}", f"{path}.id" if raw_id else None
-        )
-        top_limit = self.wall_height - _TOP_CLEARANCE
-        top = y1
-        if top_limit < top <= top_limit + _MAX_NOISE:
-            self.warnings.append(f"{path}: top lowered from {top:.3f} to {top_limit:.3f} m")
-            top = top_limit
-        if kind == "doors":
-            fields = self._door_fields(node, asset, width, top)
-            fields.update(id=opening_id, rooms=rooms, position=position)
-            return build_model(Door, fields, self.source, path)
-        lower = asset.lower()
-        window_kind = "fixed"
-        if "hung" in lower:
-            window_kind = "hung"
-        elif "slid" in lower:
-            window_kind = "slider"
-        fields = {
-            "id": opening_id,
-            "kind": window_kind,
-            "rooms": rooms,
-            "position": position,
-            "width": clamp_noise(width, 0.2, 6.0, 0.01),
-            "height": clamp_noise(round(top - y0, 6), 0.2, 4.0, 0.01),
-            "base_height": clamp_noise(y0, 0.0, 4.0, 0.01),
-        }
-        return build_model(Window, fields, self.source, path)
-
-    def _door_fields(self, node: Node, asset: str, width: float, top: float) -> dict[str, Any]:
-        lower = asset.lower()
-        if not asset or "open" in lower.replace("openable", ""):
-            door_kind = "open"
-        elif "doorframe" in lower:
-            door_kind = "doorframe"
-        else:
-            door_kind = "doorway"
-        double = "double" in lower or width > _DOUBLE_DOOR_WIDTH
-        return {
-            "kind": door_kind,
-            "leaves": "double" if double else "single",
-            "width": clamp_noise(width, 0.4, 4.0, 0.01),
-            "height": clamp_noise(top, 1.5, 4.0, 0.01),
-        }
-
-    def _opening_rooms(self, node: Node, wall: _WallInfo) -> list[str]:
-        names = [node.str_("room0", None), node.str_("room1", None)]
-        known = []
-        for name in names:
-            room_id = self.room_ids.lookup(name) if name else None
-            if room_id is not None and room_id not in known:
-                known.append(room_id)
-        if not known and wall.room:
-            wall_room = self.room_ids.lookup(wall.room)
-            if wall_room is not None:
-                known.append(wall_room)
-        if not known:
-            raise node.error(
-                f"none of the rooms {names[0]!r}, {names[1]!r} is in 'rooms'",
-                fix="room0/room1 must name rooms of the house",
-            )
-        return known
-
-    def _open_walls(self) -> list[Door]:
-        segments: list[tuple[tuple[float, float], tuple[float, float], str]] = []
-        for wall_id, wall in self.walls.items():
-            if wall.empty and not wall.exterior:
-                segments.append((wall.start, wall.end, f"walls[{wall_id!r}]"))
-        open_walls = self.root.opt("open_walls")
-        if open_walls is not None and open_walls.is_dict():
-            seg_nodes = open_walls.opt("segments")
-            for seg in seg_nodes.items() if seg_nodes is not None else []:
-                ends = seg.items()
-                if len(ends) != 2:
-                    raise seg.error("expected a segment of two points")
-                a, b = (end.vector(2, limit=1e4) for end in ends)
-                segments.append(((a[0], a[1]), (b[0], b[1]), seg.path))
-        doors: list[Door] = []
-        seen: set[tuple[float, float]] = set()
-        for start, end, label in segments:
-            mid = ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2)
-            key = (round(mid[0], 3), round(mid[1], 3))
-            if key in seen:
-                continue
-            seen.add(key)
-            door = self._open_door(mid, math.dist(start, end), label)
-            if door is not None:
-                doors.append(door)
-        return doors
-
-    def _open_door(self, mid: tuple[float, float], length: float, label: str) -> Door | None:
-        height = min(self.wall_height - _TOP_CLEARANCE, 4.0)
-        for wall in self.derived:
-            if wall.exterior:
-                continue
-            t, off = wall.locate(mid)
-            if abs(off) > 0.02 or not -0.01 <= t <= wall.length + 0.01:
-                continue
-            width = min(length, wall.length) - 0.1
-            width = min(width, 4.0)
-            if width < 0.4 or height < 1.5:
-                self.warnings.append(f"{label}: open connection too small to keep; skipped")
-                return None
-            t = min(max(t, width / 2), wall.length - width / 2)
-            spans = self.spans.setdefault(wall.id, [])
-            if any(a < t + width / 2 and t - width / 2 < b for a, b in spans):
-                self.warnings.append(f"{label}: open connection overlaps a door; skipped")
-                return None
-            spans.append((t - width / 2, t + width / 2))
-            if width < length - 0.1 - 1e-6:
-                self.warnings.append(f"{label}: open connection narrowed to {width:.2f} m")
-            fields = {
-                "id": self.opening_ids.new("open"),
-                "kind": "open",
-                "rooms": list(wall.rooms),
-                "position": wall.point_at(t),
-                "width": width,
-                "height": height,
-            }
-            return build_model(Door, fields, self.source, label)
-        self.warnings.append(f"{label}: open connection is not on a wall between rooms; skipped")
-        return None
-
-    # -- objects ---------------------------------------------------------------------------
-    def _read_objects(self) -> None:
-        nodes = self.root.opt("objects")
-        if nodes is None:
-            return
-        items = nodes.items()
-        raw_ids = {
-            item.value["id"]
-            for item in items
-            if isinstance(item.value, dict) and isinstance(item.value.get("id"), str)
-        }
-        placed: dict[str, _Placed] = {}
-        deferred: list[tuple[Node, str]] = []
-        for item in items:
-            parent_raw = _holodeck_parent(item, raw_ids) if self.holodeck else None
-            if parent_raw is not None:
-                deferred.append((item, parent_raw))
-            else:
-                self._object(item, None, placed)
-        for item, parent_raw in deferred:
-            self._object(item, placed.get(parent_raw), placed)
-
-    def _object(self, node: Node, parent: _Placed | None, placed: dict[str, _Placed]) -> None:
-        node.dict()
-        raw_id = node.str_("id")
-        asset = node.str_("assetId", "")
-        ux, uy, uz = node.get("position").dict().xyz()
-        rot = node.opt("rotation")
-        rx = ry = rz = 0.0
-        if rot is not None:
-            rot.dict()
-            rx, ry, rz = rot.num("x", 0.0), rot.num("y", 0.0), rot.num("z", 0.0)
-        x, y, _ = unity_point(ux, uy, uz)
-        yaw = yaw_from_unity(ry)
-        kind = _kind(node, raw_id, asset)
-        if parent is not None and _fixture_of(kind.category, parent):
-            self.merged.append(
-                {
-                    "object": raw_id,
-                    "category": kind.category,
-                    "into": parent.id,
-                    "why": f"the stand-in {parent.category} has its own {kind.category}",
-                }
-            )
-            return
-        src_size, size_source = kind.size, kind.size_source
-        footprint = _footprint(node, yaw)
-        if footprint is not None and size_source != "thor":
-            height = 2 * uy if parent is None and uy > 0 else None
-            if height:
-                src_size, size_source = (footprint[0], footprint[1], height), "footprint"
-        object_id = self.object_ids.new(raw_id, f"{node.path}.id")
-        choice, warning = choose_asset(
-            self.library,
-            object_id=object_id,
-            requested=asset,
-            category=kind.category,
-            size=_positive(src_size) if src_size else None,
-            fit=size_source == "thor",
-            stand_ins=kind.stand_ins,
-            size_source=size_source,
-            prefer_articulated=kind.can_open,
-        )
-        if warning:
-            self.warnings.append(f"{node.path}: {warning}")
-        sub = choice.substitution
-        if sub is not None:
-            self.substitutions.append(sub)
-        # The source's bottom: from its true height when a table or the input gives one.
-        src_height = choice.height
-        if size_source == "thor" and src_size is not None:
-            src_height = src_size[2]
-        elif sub is not None and sub.source_size is not None:
-            src_height = sub.source_size[2]
-        z = self._object_z(uy, src_height, choice.height, parent)
-        room = None
-        room_node = node.opt("roomId")
-        if room_node is not None:
-            room = self.room_ids.lookup(room_node.string())
-        if room is None and parent is not None:
-            room = parent.room
-        if room is None:
-            room = self._room_at(x, y)
-        fields: dict[str, Any] = {
-            "id": object_id,
-            "asset": choice.asset,
-            "position": (x, y, z),
-            "yaw_deg": normalise_deg(yaw + choice.turn_deg) if choice.turn_deg else yaw,
-            "scale": choice.scale,
-            "static": node.bool_("kinematic", False),
-            "support": parent.id if parent is not None else None,
-            "room": room,
-        }
-        if is_tilted(rx, rz):
-            fields["quat"] = _turn_quat(quat_from_unity(rx, ry, rz), choice.turn_deg)
-        self.objects.append(build_model(SceneObject, fields, self.source, node.path))
-        me = _Placed(
-            object_id, room, uy + src_height / 2, z + choice.height, kind.category, sub is not None
-        )
-        placed.setdefault(raw_id, me)
-        children = node.opt("children")
-        for child in children.items() if children is not None else []:
-            self._object(child, me, placed)
-
-    def _object_z(
-        self, centre_y: float, src_height: float, used_height: float, parent: _Placed | None
-    ) -> float:
-        src_bottom = centre_y - src_height / 2
-        surface_src, surface_used = (
-            (0.0, 0.0)
-            if parent is None
-            else (
-                parent.src_top,
-                parent.used_top,
-            )
-        )
-        if abs(src_bottom - surface_src) <= _REST_TOL:
-            return round(surface_used, 9)
-        return round(max(centre_y - used_height / 2, 0.0), 9)
 
     # -- lights ----------------------------------------------------------------------------
     def _read_lights(self) -> list[Light]:
@@ -638,157 +323,3 @@ def _rgb(node: Node) -> tuple[float, ...]:
     rgb = (node.num("r"), node.num("g"), node.num("b"))
     alpha = node.opt("a")
     return (*rgb, alpha.number()) if alpha is not None else rgb
-
-
-def _hole(node: Node) -> tuple[float, float, float, float]:
-    """``(x0, x1, y0, y1)`` of an opening in its wall's frame (holePolygon or boundingBox)."""
-    hole = node.opt("holePolygon")
-    if hole is not None:
-        points = hole.items()
-        if len(points) < 2:
-            raise hole.error("expected at least two corner points")
-        xs = [p.dict().num("x", limit=1e4) for p in points]
-        ys = [p.num("y", limit=1e4) for p in points]
-    else:
-        box = node.opt("boundingBox")
-        if box is None:
-            raise node.error("missing required field 'holePolygon'")
-        box.dict()
-        lo, hi = box.get("min").dict(), box.get("max").dict()
-        xs = [lo.num("x", limit=1e4), hi.num("x", limit=1e4)]
-        ys = [lo.num("y", limit=1e4), hi.num("y", limit=1e4)]
-    x0, x1, y0, y1 = (round(v, 6) for v in (min(xs), max(xs), min(ys), max(ys)))
-    if x1 - x0 < 1e-6 or y1 - y0 < 1e-6:
-        raise (hole or node).error("the opening has no area")
-    return x0, x1, max(y0, 0.0), y1
-
-
-@dataclass(frozen=True)
-class _Kind:
-    """What an object is: its holomj category, categories that may stand in for it, its
-    source size (x = depth, y = width, z = height, own frame) with where that came from, and
-    whether it opens (THOR's ``CanOpen``: an articulated stand-in is preferred)."""
-
-    category: str
-    stand_ins: tuple[str, ...] = ()
-    size: tuple[float, float, float] | None = None
-    size_source: str | None = None
-    can_open: bool = False
-
-
-_NOT_A_TYPE = {"small", "surface", "exterior", "object"}
-
-
-# A fixture that a stand-in of its parent's category already has (a THOR sink's faucet is an
-# object of its own; holomj's washbasins and sink counters come with theirs).
-FIXTURES: dict[str, frozenset[str]] = {
-    "faucet": frozenset({"washbasin", "sink_counter", "sink", "kitchen_sink", "bathtub"}),
-}
-
-
-def _fixture_of(category: str, parent: _Placed) -> bool:
-    """Whether an object of ``category`` is a fixture of its substituted ``parent``."""
-    return parent.substituted and parent.category in FIXTURES.get(category, frozenset())
-
-
-def _kind(node: Node, raw_id: str, asset: str) -> _Kind:
-    """The object's kind.
-
-    * Holodeck ``object_name`` (``"coffee table-0"`` -> ``"coffee table"``) names the category.
-    * An assetId in the AI2-THOR table (:mod:`holomj.importers.thor_assets`) gives the THOR type,
-      hence the category (``holomj/data/thor_types.json``), and the true size.
-    * Otherwise the THOR type spelled by the assetId's leading words (``"Coffee_Table_3"`` ->
-      ``CoffeeTable``), else by the id's first part (``"Sofa|2|1"`` -> ``Sofa``; Holodeck small
-      objects ``"mug-0|table-0 (kitchen)"`` -> ``Mug``), with a typical size of the type.
-    * Otherwise the id's first part when it is a word (never the number or ``small`` that start
-      ProcTHOR 0.0.1 ids such as ``4|2|4`` and ``small|4|1``), else the assetId before ``_``.
-    """
-    thor = thor_asset(asset) if asset else None
-    name = node.opt("object_name")
-    if name is not None:
-        text = _INSTANCE_SUFFIX.sub("", name.string()).strip()
-        if thor is not None:
-            return _Kind(text, size=thor.size, size_source="thor", can_open=thor.can_open)
-        return _Kind(text)
-    if thor is not None:
-        return _thor_kind(thor.type, thor.size, "thor", thor.can_open)
-    first = _INSTANCE_SUFFIX.sub("", raw_id.split("|", 1)[0]).strip()
-    word = first if _is_word(first) else ""
-    thor_name = _type_from_asset_id(asset) or (thor_type(word) if word else None)
-    if thor_name is not None:
-        size = category_size(thor_name) or category_size(thor_category(thor_name) or "")
-        size = size or thor_type_size(thor_name)
-        return _thor_kind(thor_name, size, "category" if size else None, thor_type_opens(thor_name))
-    text = word or (asset.split("_", 1)[0] if asset else "") or "object"
-    size = category_size(text)
-    return _Kind(text, size=size, size_source="category" if size else None)
-
-
-def _thor_kind(
-    thor_name: str, size: tuple[float, float, float] | None, source: str | None, opens: bool
-) -> _Kind:
-    # The THOR type itself comes last: a library may file assets under THOR's names ("Chair").
-    category = thor_category(thor_name) or thor_name
-    return _Kind(category, (*thor_stand_ins(thor_name), thor_name), size, source, opens)
-
-
-def _is_word(text: str) -> bool:
-    return any(c.isalpha() for c in text) and text.lower() not in _NOT_A_TYPE
-
-
-def _type_from_asset_id(asset: str) -> str | None:
-    """The THOR type spelled by the longest run of leading words of an assetId."""
-    words = [w for w in re.split(r"[_\s]+", asset) if w]
-    for end in range(len(words), 0, -1):
-        found = thor_type("".join(words[:end]))
-        if found is not None:
-            return found
-    return None
-
-
-def _holodeck_parent(item: Node, raw_ids: set[str]) -> str | None:
-    """Holodeck small objects are ``"<name>|<receptacle id>"``: the receptacle, if listed."""
-    value = item.value
-    if not isinstance(value, dict) or not isinstance(value.get("id"), str):
-        return None
-    raw = value["id"]
-    if "|" not in raw:
-        return None
-    parent = raw.split("|", 1)[1]
-    return parent if parent in raw_ids and parent != raw else None
-
-
-def _footprint(node: Node, yaw_deg: float) -> tuple[float, float] | None:
-    """Holodeck ``vertices`` (centimetres, world x/z) measured along the object's own axes."""
-    vertices = node.opt("vertices")
-    if vertices is None:
-        return None
-    points = []
-    for vertex in vertices.items():
-        if isinstance(vertex.value, dict):
-            points.append((vertex.num("x", limit=1e6), vertex.num("z", limit=1e6)))
-        else:
-            a, b = vertex.vector(2, limit=1e6)
-            points.append((a, b))
-    if len(points) < 3:
-        raise vertices.error("expected at least three footprint points")
-    c, s = math.cos(math.radians(yaw_deg)), math.sin(math.radians(yaw_deg))
-    along = [(px * c + py * s) / 100 for px, py in points]
-    across = [(-px * s + py * c) / 100 for px, py in points]
-    return (round(max(along) - min(along), 6), round(max(across) - min(across), 6))
-
-
-def _turn_quat(
-    quat: tuple[float, float, float, float], turn_deg: float
-) -> tuple[float, float, float, float]:
-    """``quat`` followed by a turn of ``turn_deg`` about the object's own Z."""
-    if not turn_deg:
-        return quat
-    half = math.radians(turn_deg) / 2
-    c, s = math.cos(half), math.sin(half)
-    w, x, y, z = quat
-    return (w * c - z * s, x * c + y * s, y * c - x * s, z * c + w * s)
-
-
-def _positive(size: tuple[float, float, float]) -> tuple[float, float, float]:
-    return (max(size[0], MIN_EXTENT), max(size[1], MIN_EXTENT), max(size[2], MIN_EXTENT))

@@ -54,7 +54,7 @@ from typing import Any
 
 from holomj.errors import SpecError
 from holomj.importers.common import build_model, light_kind, snap_opening
-from holomj.importers.frames import normalise_deg, quat_from_euler_xyz
+from holomj.importers.frames import normalise_deg, quat_from_euler_xyz, triple
 from holomj.importers.ids import sanitise
 from holomj.importers.jsonpath import Node
 from holomj.importers.result import ImportResult
@@ -138,7 +138,8 @@ class _SceneDefImport(ImportState):
                 raise color.error(f"expected 3 or 4 numbers, got {len(values)}")
             rgba = [min(max(v, 0.0), 1.0) for v in values] + ([1.0] if len(values) == 3 else [])
             material_id = sanitise(name, "material")
-            self.defined[material_id] = Material(rgba=tuple(rgba))  # type: ignore[arg-type]
+            r, g, b, a = rgba
+            self.defined[material_id] = Material(rgba=(r, g, b, a))
             if material_id != name:
                 self.warnings.append(f"materials.{name}: renamed to {material_id!r}")
 
@@ -213,6 +214,7 @@ class _SceneDefImport(ImportState):
         default_width = 1.0 if kind == "doors" else 1.2
         width = node.num("width", default_width)
         rooms_node = node.opt("rooms")
+        rooms: list[str] | None = None
         if rooms_node is not None:
             rooms = []
             for r in rooms_node.items():
@@ -240,10 +242,10 @@ class _SceneDefImport(ImportState):
         for key in ("kind", "height", "base_height", "leaves"):
             if node.has(key):
                 fields[key] = node.get(key).value
-        model = Door if kind == "doors" else Window
-        if model is Window:
-            fields.pop("leaves", None)
-        return build_model(model, fields, self.source, path)
+        if kind == "doors":
+            return build_model(Door, fields, self.source, path)
+        fields.pop("leaves", None)
+        return build_model(Window, fields, self.source, path)
 
     @staticmethod
     def _rooms_at_wall(walls: list[Any], point: tuple[float, float]) -> list[str] | None:
@@ -269,9 +271,9 @@ class _SceneDefImport(ImportState):
             if not category and not asset:
                 raise node.error("an object needs a 'category' or an 'asset'")
             bbox = node.opt("bbox_size")
-            base_size = bbox.vector(3, limit=1e3) if bbox is not None else None
-            if base_size is not None and min(base_size) <= 0:
-                raise bbox.error("sizes must be positive")  # type: ignore[union-attr]
+            base_size = bbox.vector3(limit=1e3) if bbox is not None else None
+            if bbox is not None and base_size is not None and min(base_size) <= 0:
+                raise bbox.error("sizes must be positive")
             if node.has("material"):
                 self.warnings.append(f"{node.path}.material: object materials are not supported")
             placements = node.get("placements").items()
@@ -314,7 +316,7 @@ class _SceneDefImport(ImportState):
         scale3 = (1.0, 1.0, 1.0)
         if scale_node is not None:
             if isinstance(scale_node.value, list):
-                scale3 = scale_node.vector(3, limit=1e3)  # type: ignore[assignment]
+                scale3 = scale_node.vector3(limit=1e3)
             else:
                 s = scale_node.number(limit=1e3)
                 scale3 = (s, s, s)
@@ -322,14 +324,14 @@ class _SceneDefImport(ImportState):
                 raise scale_node.error("scale must be positive")
         size = None
         if base_size is not None:
-            size = tuple(b * s for b, s in zip(base_size, scale3, strict=True))
+            size = triple(b * s for b, s in zip(base_size, scale3, strict=True))
         object_id = self.object_ids.new(name or f"object_{index}", where)
         choice, warning = choose_asset(
             self.library,
             object_id=object_id,
             requested=asset,
             category=category,
-            size=size,  # type: ignore[arg-type]
+            size=size,
         )
         if warning:
             self.warnings.append(f"{obj.path}: {warning}")

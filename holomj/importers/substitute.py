@@ -2,13 +2,13 @@
 
 1. The requested asset id is in the library: use it as it is.
 2. Otherwise an asset of the object's category, then of the category's aliases
-   (``holomj/data/category_aliases.json``), then of the caller's stand-in categories (for THOR
+   (``holomj/data/category_facts.json``), then of the caller's stand-in categories (for THOR
    types, ``holomj/data/thor_types.json``), closest in size.
 3. Otherwise ``builtin:box`` scaled to the object's size.
 
 The object's size (x = depth, y = width, z = height, metres, in the object's own frame) is what
 the caller knows from the source (the AI2-THOR asset table, a Holodeck footprint), else a typical
-size of its category from ``holomj/data/category_sizes.json``; unknown categories get a 0.5 m
+size of its category from ``holomj/data/category_facts.json``; unknown categories get a 0.5 m
 cube and a warning.
 
 Fitting (``fit=True``; the importers ask for it when the size is the original's true size)
@@ -41,21 +41,13 @@ an opening original gets a stand-in that opens whenever the library has one.
 
 from __future__ import annotations
 
-import json
 import math
-from dataclasses import dataclass
-from functools import cache
-from importlib import resources
+from dataclasses import dataclass, replace
 
+from holomj.importers.frames import triple
 from holomj.importers.result import Substitution
-from holomj.library.store import (
-    BUILTIN_BOX,
-    AssetLibrary,
-    LibraryAsset,
-    category_aliases,
-    normalise_category,
-    size_distance,
-)
+from holomj.library.store import BUILTIN_BOX, AssetLibrary, LibraryAsset, size_distance
+from holomj.spec.categories import category_aliases, category_size, normalise_category
 
 FALLBACK_SIZE = (0.5, 0.5, 0.5)
 SCALE_MIN = 0.5  # smallest per-axis factor applied to a stand-in
@@ -65,23 +57,6 @@ MIN_EXTENT = 0.005  # metres: thinner source extents (a credit card's 4.5 mm) ar
 
 Size = tuple[float, float, float]
 Scale = float | tuple[float, float, float]
-
-
-@cache
-def category_sizes() -> dict[str, Size]:
-    """Typical sizes (x = depth, y = width, z = height, metres) by normalised category."""
-    text = resources.files("holomj.data").joinpath("category_sizes.json").read_text("utf-8")
-    table = json.loads(text)
-    return {
-        normalise_category(name): (float(v["depth"]), float(v["width"]), float(v["height"]))
-        for name, v in table.items()
-        if not name.startswith("_")
-    }
-
-
-def category_size(category: str) -> Size | None:
-    """The typical size of a category, if the table knows it."""
-    return category_sizes().get(normalise_category(category))
 
 
 @dataclass(frozen=True)
@@ -105,6 +80,14 @@ def fit_scale(asset_size: Size, target: Size) -> tuple[float, float, float] | No
     return scale
 
 
+def clamped_scale(scale: tuple[float, float, float]) -> tuple[float, float, float]:
+    """The factors nearest to ``scale`` within the limits (each axis in ``[SCALE_MIN,
+    SCALE_MAX]``, the largest at most ``MAX_ASPECT_CHANGE`` times the smallest)."""
+    clamped = [min(max(f, SCALE_MIN), SCALE_MAX) for f in scale]
+    low = min(clamped)
+    return triple(round(min(f, low * MAX_ASPECT_CHANGE), 4) for f in clamped)
+
+
 def _may_turn(asset: LibraryAsset) -> bool:
     """Small props may stand in turned by 90°; furniture keeps its front where the source has it."""
     placement = set(asset.meta.placement)
@@ -117,7 +100,7 @@ def _turned(size: tuple[float, float, float], turn: float) -> tuple[float, float
 
 
 def _raw_scale(asset_size: Size, target: Size) -> tuple[float, float, float]:
-    return tuple(round(t / max(a, 1e-6), 4) for a, t in zip(asset_size, target))  # type: ignore[return-value]
+    return triple(round(t / max(a, 1e-6), 4) for a, t in zip(asset_size, target))
 
 
 def straight_distance(a: Size, b: Size) -> float:
@@ -154,13 +137,17 @@ def choose_asset(
     stand_ins: tuple[str, ...] = (),
     size_source: str | None = None,
     prefer_articulated: bool = False,
+    nearest_when_none_fits: bool = False,
 ) -> tuple[AssetChoice, str | None]:
     """Pick the asset for an object; also returns a warning when the size had to be guessed.
 
     ``fit``: scale a stand-in to ``size`` (see the module notes); ``stand_ins``: further
     categories to try after the category and its aliases; ``size_source``: where ``size`` came
     from, for the substitution record; ``prefer_articulated``: the original opens, so an
-    articulated asset of any of the categories goes first (see the module notes).
+    articulated asset of any of the categories goes first (see the module notes);
+    ``nearest_when_none_fits``: when no asset of the categories fits within the scale limits,
+    the closest one is scaled as far towards ``size`` as the limits allow (an object of its
+    own kind a little off its size rather than a box of it).
     """
     if requested and requested in library:
         return AssetChoice(requested, 1.0, library.get(requested).meta.size[2], None), None
@@ -176,82 +163,117 @@ def choose_asset(
         )
     size = (max(size[0], MIN_EXTENT), max(size[1], MIN_EXTENT), max(size[2], MIN_EXTENT))
 
-    def substitution(used: str, reason: str, scale: Scale, turn: float = 0.0) -> Substitution:
-        return Substitution(
+    search = _Search(
+        library,
+        category,
+        size,
+        fit,
+        Substitution(
             object_id=object_id,
             requested_asset=requested,
             category=category,
-            used_asset=used,
-            reason=reason,
-            scale=scale,
+            used_asset="",
+            reason="",
             source_size=size,
             size_source=size_source,
-            turn_deg=turn,
-        )
-
+        ),
+    )
     names = candidate_categories(category, stand_ins) if category else []
-    missed: tuple[float, str, tuple[float, float, float]] | None = None
-
-    def search(articulated_only: bool) -> AssetChoice | None:
-        nonlocal missed
-        for name in names:
-            candidates = [
-                a
-                for a in library.by_category(name)
-                if a.meta.id != BUILTIN_BOX and (a.meta.articulated or not articulated_only)
-            ]
-            if not candidates:
-                continue
-            same = normalise_category(name) == normalise_category(category)
-            what = "same category, " if same else f"stand-in of category {name!r}, "
-            if articulated_only and same:
-                what = "same category, articulated (the original opens), "
-            elif articulated_only:
-                what = f"articulated stand-in of category {name!r} (the original opens), "
-            if not fit:
-                stand_in = min(
-                    candidates, key=lambda a: (size_distance(a.meta.size, size), a.meta.id)
-                )
-                reason = f"not in library; {what}closest size"
-                sub = substitution(stand_in.meta.id, reason, 1.0)
-                return AssetChoice(stand_in.meta.id, 1.0, stand_in.meta.size[2], sub)
-            fitting = []
-            for asset in candidates:
-                for turn in (0.0, 90.0) if _may_turn(asset) else (0.0,):
-                    own = _turned(asset.meta.size, turn)
-                    distance = straight_distance(own, size)
-                    scale = fit_scale(own, size)
-                    if scale is not None:
-                        fitting.append((turn, distance, asset.meta.id, asset, _turned(scale, turn)))
-                    elif (
-                        not articulated_only
-                        and turn == 0.0
-                        and (missed is None or distance < missed[0])
-                    ):
-                        missed = (distance, asset.meta.id, _raw_scale(own, size))
-            if fitting:
-                turn, _, asset_id, asset, scale = min(fitting, key=lambda f: f[:3])
-                turned = ", turned 90°" if turn else ""
-                reason = f"not in library; {what}scaled to the source size{turned}"
-                used = compact_scale(scale)
-                height = round(asset.meta.size[2] * scale[2], 9)
-                sub = substitution(asset_id, reason, used, turn)
-                return AssetChoice(asset_id, used, height, sub, turn)
-        return None
-
     for articulated_only in (True, False) if prefer_articulated else (False,):
-        found = search(articulated_only)
-        if found is not None:
-            return found, warning
-    if missed is not None:
-        factors = ", ".join(f"{s:g}" for s in missed[2])
-        reason = (
-            f"no asset of category {category!r} fits within the scale limits (closest "
-            f"{missed[1]!r} would need ({factors})); box of the object's size"
+        for name in names:
+            found = search.in_category(name, articulated_only)
+            if found is not None:
+                return found, warning
+    return search.fallback(nearest_when_none_fits), warning
+
+
+class _Search:
+    """The search of :func:`choose_asset` over candidate categories, remembering the closest
+    asset that did not fit (for the fallback and its reason)."""
+
+    def __init__(
+        self, library: AssetLibrary, category: str, size: Size, fit: bool, record: Substitution
+    ) -> None:
+        self.library = library
+        self.category = category
+        self.size = size
+        self.fit = fit
+        self.record = record  # the substitution's fixed fields
+        self.missed: tuple[float, str, tuple[float, float, float]] | None = None
+
+    def substitution(self, used: str, reason: str, scale: Scale, turn: float = 0.0) -> Substitution:
+        """The record of using ``used`` for the object."""
+        return replace(self.record, used_asset=used, reason=reason, scale=scale, turn_deg=turn)
+
+    def _what(self, name: str, articulated_only: bool) -> str:
+        same = normalise_category(name) == normalise_category(self.category)
+        if articulated_only and same:
+            return "same category, articulated (the original opens), "
+        if articulated_only:
+            return f"articulated stand-in of category {name!r} (the original opens), "
+        return "same category, " if same else f"stand-in of category {name!r}, "
+
+    def in_category(self, name: str, articulated_only: bool) -> AssetChoice | None:
+        """The best asset of category ``name`` (only articulated ones when asked), or None."""
+        size = self.size
+        candidates = [
+            a
+            for a in self.library.by_category(name)
+            if a.meta.id != BUILTIN_BOX and (a.meta.articulated or not articulated_only)
+        ]
+        if not candidates:
+            return None
+        what = self._what(name, articulated_only)
+        if not self.fit:
+            stand_in = min(candidates, key=lambda a: (size_distance(a.meta.size, size), a.meta.id))
+            sub = self.substitution(stand_in.meta.id, f"not in library; {what}closest size", 1.0)
+            return AssetChoice(stand_in.meta.id, 1.0, stand_in.meta.size[2], sub)
+        fitting = []
+        for asset in candidates:
+            for turn in (0.0, 90.0) if _may_turn(asset) else (0.0,):
+                own = _turned(asset.meta.size, turn)
+                distance = straight_distance(own, size)
+                scale = fit_scale(own, size)
+                if scale is not None:
+                    fitting.append((turn, distance, asset.meta.id, asset, _turned(scale, turn)))
+                elif not articulated_only and turn == 0.0 and self._closer(distance):
+                    self.missed = (distance, asset.meta.id, _raw_scale(own, size))
+        if not fitting:
+            return None
+        turn, _, asset_id, asset, scale = min(fitting, key=lambda f: f[:3])
+        turned = ", turned 90°" if turn else ""
+        reason = f"not in library; {what}scaled to the source size{turned}"
+        used = compact_scale(scale)
+        height = round(asset.meta.size[2] * scale[2], 9)
+        return AssetChoice(
+            asset_id, used, height, self.substitution(asset_id, reason, used, turn), turn
         )
-    else:
-        reason = f"no asset of category {category!r}; box of the object's size"
-    box_height = library.get(BUILTIN_BOX).meta.size[2] * size[2]
-    return AssetChoice(
-        BUILTIN_BOX, size, box_height, substitution(BUILTIN_BOX, reason, size)
-    ), warning
+
+    def _closer(self, distance: float) -> bool:
+        return self.missed is None or distance < self.missed[0]
+
+    def fallback(self, nearest: bool) -> AssetChoice:
+        """When no asset fitted: the closest one at the nearest allowed scale (``nearest``),
+        else ``builtin:box`` of the object's size."""
+        category, missed = self.category, self.missed
+        if missed is not None and nearest:
+            asset = self.library.get(missed[1])
+            scale = clamped_scale(missed[2])
+            reason = (
+                f"not in library; no asset of category {category!r} fits within the scale "
+                f"limits: closest {missed[1]!r} scaled by the nearest allowed factors"
+            )
+            used = compact_scale(scale)
+            height = round(asset.meta.size[2] * scale[2], 9)
+            return AssetChoice(missed[1], used, height, self.substitution(missed[1], reason, used))
+        if missed is not None:
+            factors = ", ".join(f"{s:g}" for s in missed[2])
+            reason = (
+                f"no asset of category {category!r} fits within the scale limits (closest "
+                f"{missed[1]!r} would need ({factors})); box of the object's size"
+            )
+        else:
+            reason = f"no asset of category {category!r}; box of the object's size"
+        box_height = self.library.get(BUILTIN_BOX).meta.size[2] * self.size[2]
+        sub = self.substitution(BUILTIN_BOX, reason, self.size)
+        return AssetChoice(BUILTIN_BOX, self.size, box_height, sub)

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
+from holomj.importers.frames import triple
 from holomj.library.store import normalise_category
 
 Size = tuple[float, float, float]
@@ -127,4 +128,4 @@ def thor_type_size(thor_type_name: str) -> Size | None:
     sizes = [a.size for a in thor_assets().values() if a.type == thor_type_name]
     if not sizes:
         return None
-    return tuple(round(statistics.median(s[i] for s in sizes), 4) for i in range(3))  # type: ignore[return-value]
+    return triple(round(statistics.median(s[i] for s in sizes), 4) for i in range(3))

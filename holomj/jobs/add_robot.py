@@ -14,6 +14,7 @@ from typing import cast
 from holomj.errors import InputError
 from holomj.jobs.folder import (
     open_library,
+    prepare_output,
     read_robot,
     read_scene,
     require_scene_folder,
@@ -56,6 +57,7 @@ def add_robot_to_folder(
     """
     clearance = DEFAULT_CLEARANCE_M if clearance is None else clearance
     folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
+    prepared = prepare_output(folder, overwrite=True)  # rewritable, before any work
     existing = read_robot(folder)
     if existing is not None and not replace:
         raise InputError(
@@ -68,5 +70,5 @@ def add_robot_to_folder(
     )
     compiled = add_robot(compiled, spec, stage_rng(seed, "robot"), clearance=clearance, room=room)
     warnings = simulate(compiled.model, SMOKE_SECONDS).warnings
-    write_scene_folder(compiled, folder, overwrite=True, keep_from=folder)
+    write_scene_folder(compiled, prepared, keep_from=folder)
     return AddRobotResult(folder, cast(RobotRecord, compiled.robot), warnings)

@@ -96,12 +96,13 @@ def import_assets(
 
     The options are checked and the files listed before anything is written; ``on_planned``
     then gets the number of files, ``on_done`` each file's outcome as it finishes. Ids never
-    silently take over another asset's (see :func:`asset_pipeline.manage.plan_jobs`: a clash
+    silently take over another asset's (see :func:`asset_pipeline.import_plan.plan_jobs`: a clash
     gets a ``-2`` suffix and a note, a clashing ``asset_id`` fails). A file that
     fails is reported in the summary and the others go on; see
     :func:`asset_pipeline.manage.run_imports` for degraded (fallback) decompositions.
     """
-    from asset_pipeline.manage import existing_assets, plan_jobs, run_imports
+    from asset_pipeline.import_plan import existing_assets, plan_jobs
+    from asset_pipeline.manage import run_imports
 
     options = _import_options(
         category, size, description, mass_kg, up, front, preset, threshold, max_hulls, timeout_s

@@ -10,14 +10,21 @@ with ``import_report.json`` (and ``report.json``, the final validation).
 Which inputs are made to stand: ProcTHOR/Holodeck houses and SceneDefs by default (their
 coordinates were authored for other assets and another engine); a holomj ``scene.json`` is
 the source of truth and is compiled as it is (``fix=True`` makes it stand too, ``fix=False``
-compiles any input as imported). A scene with objects the stage cannot save is refused
-(:class:`SceneUnstableError`, exit code 1, nothing written) unless ``allow_invalid``, which
-writes it marked ``"valid": false`` in ``import_report.json``.
+compiles any input as imported).
+
+A house is never thrown away for what can be fixed or honestly left out
+(:mod:`holomj.physics.standing.keep`): an object that cannot stand where it was authored moves
+to another receptacle of the same kind, else it is left out; each is recorded in
+``import_report.json`` (``relocated``, ``left_out``: from where, to where, why). Refused
+(:class:`SceneUnstableError`, exit code 1, nothing written) unless ``allow_invalid`` (which
+writes it marked ``"valid": false``): a house that keeps less than :data:`MIN_KEPT_SHARE` of
+its objects, one that leaves any object out with ``strict``, one that still does not validate.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import json
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -26,18 +33,20 @@ from typing import Any
 from holomj.errors import HolomjError
 from holomj.file_names import IMPORT_REPORT, REPORT_JSON
 from holomj.formats.summaries import ModelSummary, SceneSummary, model_summary, scene_summary
+from holomj.importers.result import ImportResult
 from holomj.jobs.folder import prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, Profile, check_profile, compile_scene
 from holomj.mjcf.objects import Furniture
 from holomj.physics.smoke import simulate
-from holomj.physics.standing import StandOutcome, make_stand
+from holomj.physics.standing.keep import KeptHouse, make_stand_keeping
 from holomj.spec.report import StabilityReport
 from holomj.spec.robot import RobotRecord
 from holomj.spec.scene import SceneSpec
 
 FIXED_FORMATS = ("procthor", "holodeck", "scenedef")  # made to stand unless fix=False
 MAX_NAMED = 8  # unsaved objects named in the error message
+MIN_KEPT_SHARE = 0.97  # a house keeps at least this share of its objects
 
 
 class SceneUnstableError(HolomjError):
@@ -100,6 +109,8 @@ def compile_file(
     seed: int = 0,
     fix: bool | None = None,
     allow_invalid: bool = False,
+    strict: bool = False,
+    objathor: Path | None = None,
 ) -> CompileReport:
     """Import ``input_path`` (any supported format), compile it and export it to ``out``.
 
@@ -115,24 +126,24 @@ def compile_file(
 
     ``fix`` (None: by format, see the module docstring) makes the scene stand; the report's
     ``stand`` (and ``import_report.json``) lists every change. Raises
-    :class:`SceneUnstableError` naming the objects it could not save, before anything is
-    written, unless ``allow_invalid``.
+    :class:`SceneUnstableError` (nothing written) when it does not stand, keeps too little or,
+    with ``strict``, leaves anything out, unless ``allow_invalid``. ``objathor``: a folder
+    whose Objaverse assets the house names are imported into the library first.
     """
-    from holomj.importers import load_scene_input
-
     timings: dict[str, float] = {}
     checked_profile = check_profile(profile)
-    prepare_output(out, overwrite)
+    prepared = prepare_output(out, overwrite)
     start = time.perf_counter()
-    library = AssetLibrary.open(library_path)
-    result = load_scene_input(Path(input_path), library, fmt)
+    library, result, objathor_note = _import(Path(input_path), fmt, library_path, objathor)
     timings["import"] = time.perf_counter() - start
     start = time.perf_counter()
     build = _Builder(library, checked_profile, robot, seed)
-    stand = None
+    stand, refusal = None, None
     if fix if fix is not None else result.format in FIXED_FORMATS:
-        stand = _make_stand(result.scene, library, build, Path(input_path), out, allow_invalid)
-        compiled = stand.compiled
+        stand, refusal = _make_stand(
+            result.scene, library, build, Path(input_path), out, (allow_invalid, strict)
+        )
+        compiled = stand.outcome.compiled
         timings["stand"] = time.perf_counter() - start
     else:
         compiled = build(result.scene, "as-is")
@@ -142,18 +153,10 @@ def compile_file(
         start = time.perf_counter()
         sim_warnings = simulate(compiled.model, check_seconds).warnings
         timings["check"] = time.perf_counter() - start
-    report_json = {**result.to_report(), "simulation_warnings": sim_warnings}
-    extra: dict[str, Any] = {}
-    stand_record = None
-    if stand is not None:
-        stand_record = {**stand.to_report(), "allow_invalid": allow_invalid}
-        report_json.update(stand_record)
-        if stand.report is not None:
-            extra[REPORT_JSON] = stand.report.model_dump(mode="json")
+    stand_record = None if stand is None else _stand_record(stand, refusal, allow_invalid, strict)
+    files = _report_files(result, sim_warnings, stand, stand_record)
     start = time.perf_counter()
-    write_scene_folder(
-        compiled, out, overwrite=overwrite, extra_json={IMPORT_REPORT: report_json, **extra}
-    )
+    write_scene_folder(compiled, prepared, extra_json=files)
     timings["export"] = time.perf_counter() - start
     return CompileReport(
         input=str(input_path),
@@ -163,12 +166,26 @@ def compile_file(
         model=model_summary(compiled.model),
         substitutions=[s.__dict__ for s in result.substitutions],
         merged=list(result.merged),
-        warnings=list(result.warnings),
+        warnings=[*([objathor_note] if objathor_note else []), *result.warnings],
         sim_warnings=sim_warnings,
         timings_s={k: round(v, 4) for k, v in timings.items()},
         robot=_robot_summary(compiled.robot),
         stand=stand_record,
     )
+
+
+def _import(
+    input_path: Path, fmt: str | None, library_path: Path | None, objathor: Path | None
+) -> tuple[AssetLibrary, ImportResult, str | None]:
+    """The library (with the house's objathor assets imported into it first, when asked),
+    the imported scene, and a note of what ``objathor`` brought."""
+    from holomj.importers import load_scene_input
+
+    note = None
+    if objathor is not None:
+        library_path, note = _objathor_assets(input_path, objathor, library_path)
+    library = AssetLibrary.open(library_path)
+    return library, load_scene_input(input_path, library, fmt), note
 
 
 class _Builder:
@@ -199,35 +216,123 @@ class _Builder:
         return reattach_robot(compiled, self.first)
 
 
+def _report_files(
+    result: ImportResult,
+    sim_warnings: dict[str, int],
+    stand: KeptHouse | None,
+    stand_record: dict[str, Any] | None,
+) -> dict[str, Any]:
+    """``import_report.json`` and, when the house was made to stand, ``report.json``."""
+    files: dict[str, Any] = {
+        IMPORT_REPORT: {
+            **result.to_report(),
+            "simulation_warnings": sim_warnings,
+            **(stand_record or {}),
+        }
+    }
+    if stand is not None and stand.outcome.report is not None:
+        files[REPORT_JSON] = stand.outcome.report.model_dump(mode="json")
+    return files
+
+
+def _stand_record(
+    stand: KeptHouse, refusal: str | None, allow_invalid: bool, strict: bool
+) -> dict[str, Any]:
+    """What making the house stand changed, for ``import_report.json`` and the report."""
+    return {
+        **stand.outcome.to_report(),
+        **stand.to_report(),
+        "valid": stand.outcome.valid and refusal is None,
+        "refusal": refusal,
+        "allow_invalid": allow_invalid,
+        "strict": strict,
+    }
+
+
 def _make_stand(
     scene: SceneSpec,
     library: AssetLibrary,
     build: _Builder,
     source: Path,
     out: Path,
-    allow_invalid: bool,
-) -> StandOutcome:
-    """The scene made to stand (its validation report names ``out``, as ``holomj validate
-    OUT`` would); :class:`SceneUnstableError` when it does not stand, unless
-    ``allow_invalid``."""
-    outcome = make_stand(scene, library, build, validate_unsaved=allow_invalid, source=out)
-    if not outcome.valid and not allow_invalid:
-        named = "; ".join(f"{u.name} ({u.why})" for u in outcome.unsaved[:MAX_NAMED])
-        more = len(outcome.unsaved) - MAX_NAMED
-        if more > 0:
-            named += f"; and {more} more"
-        what = (
-            f"{len(outcome.unsaved)} object(s) could not be made to stand: {named}"
-            if outcome.unsaved
-            else f"the scene does not validate: {_verdict(outcome.report)}"
-        )
+    flags: tuple[bool, bool],
+) -> tuple[KeptHouse, str | None]:
+    """The scene made to stand, moving or leaving out what cannot (its validation report
+    names ``out``, as ``holomj validate OUT`` would); :class:`SceneUnstableError` when it
+    does not stand, keeps too little or (``strict``) leaves anything out, unless
+    ``allow_invalid`` (``flags``: ``(allow_invalid, strict)``); then the reason it would
+    have been refused comes with it (None when it stands)."""
+    allow_invalid, strict = flags
+    kept = make_stand_keeping(scene, library, build, source=out)
+    problem = _refusal(kept, strict)
+    if problem is not None and not allow_invalid:
         raise SceneUnstableError(
-            what,
+            problem,
             where=str(source),
             fix="nothing was written; pass --allow-invalid to write the scene anyway "
             "(marked invalid in import_report.json), or --no-fix to compile it as imported",
         )
-    return outcome
+    return kept, problem
+
+
+def _refusal(kept: KeptHouse, strict: bool) -> str | None:
+    """Why the house is refused, or None."""
+    outcome, left = kept.outcome, kept.left_out
+    if strict and left:
+        return f"--strict: {len(left)} object(s) would be left out: {_named(left)}"
+    if kept.kept_share < MIN_KEPT_SHARE:
+        return (
+            f"the house keeps only {kept.kept_share:.1%} of its {kept.imported} objects "
+            f"(at least {MIN_KEPT_SHARE:.0%} needed); left out: {_named(left)}"
+        )
+    if outcome.valid:
+        return None
+    if outcome.unsaved:
+        rows = [{"object": u.name, "why": u.why} for u in outcome.unsaved]
+        return f"{len(rows)} object(s) could not be made to stand: {_named(rows)}"
+    return f"the scene does not validate: {_verdict(outcome.report)}"
+
+
+def _named(rows: list[dict[str, Any]]) -> str:
+    named = "; ".join(f"{r['object']} ({r['why']})" for r in rows[:MAX_NAMED])
+    more = len(rows) - MAX_NAMED
+    return named + (f"; and {more} more" if more > 0 else "")
+
+
+def _objathor_assets(
+    house: Path, directory: Path, library_path: Path | None
+) -> tuple[Path | None, str]:
+    """Import into the library the assets of ``directory`` that ``house`` names by uid; the
+    library to use and a note of what was imported."""
+    from holomj.jobs.objathor import import_objathor
+
+    try:
+        data = json.loads(house.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return library_path, "--objathor: the house could not be read for its asset ids"
+    assets = directory / "assets" if (directory / "assets").is_dir() else directory
+    named = sorted(_asset_ids(data.get("objects") if isinstance(data, dict) else None))
+    present = [uid for uid in named if (assets / uid).is_dir()]
+    if not present:
+        return (
+            library_path,
+            f"--objathor: none of the house's {len(named)} asset ids is in {assets}",
+        )
+    imported = import_objathor(directory, library=library_path, uids=present)
+    return imported.library, (
+        f"--objathor: {len(present)} of the house's {len(named)} asset ids imported from {assets}"
+    )
+
+
+def _asset_ids(objects: Any) -> set[str]:
+    """The ``assetId`` of every object and nested child."""
+    found: set[str] = set()
+    for obj in objects if isinstance(objects, list) else ():
+        if isinstance(obj, dict):
+            if isinstance(obj.get("assetId"), str):
+                found.add(obj["assetId"])
+            found |= _asset_ids(obj.get("children"))
+    return found
 
 
 def _verdict(report: StabilityReport | None) -> str:

@@ -25,7 +25,11 @@ the jobs layer only see data in memory.
 from __future__ import annotations
 
 import json
+import os
 import shutil
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -58,14 +62,48 @@ SCENE_FILES = frozenset(
 )
 
 
-def prepare_output(out: Path, overwrite: bool) -> None:
-    """Check, before any work, that ``out`` may be written."""
+@dataclass(frozen=True)
+class PreparedOutput:
+    """An output folder :func:`prepare_output` checked: writing it needs no second check."""
+
+    path: Path
+    overwrite: bool
+
+
+def prepare_output(out: Path, overwrite: bool) -> PreparedOutput:
+    """Check, before any work, that ``out`` may be written; a one-line error naming what and
+    where when not (exit code 2): it exists (without ``overwrite``) or is not a folder, or the
+    folder it would be made in is a file, not writable, or refuses a new entry (``/proc``)."""
+    out = Path(out)
     if out.exists() and not overwrite:
         raise OutputExistsError(
             "output folder exists", where=str(out), fix="pass --overwrite to replace it"
         )
     if out.exists() and not out.is_dir():
         raise OutputExistsError("output path exists and is not a folder", where=str(out))
+    _check_writable_beside(out)
+    return PreparedOutput(out, overwrite)
+
+
+def _check_writable_beside(out: Path) -> None:
+    """The nearest existing folder above ``out`` takes a new entry (tried: a temporary folder
+    made and removed there)."""
+    base = out.absolute().parent
+    while not base.exists() and base != base.parent:
+        base = base.parent
+    fix = "choose an output folder in a writable place"
+    if not base.is_dir():
+        raise InputError(
+            f"the output folder would be inside a file ({base})", where=str(out), fix=fix
+        )
+    if not os.access(base, os.W_OK | os.X_OK):
+        raise InputError(f"cannot write into {base} (permission denied)", where=str(out), fix=fix)
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=f".{out.name}.check-", dir=base))
+    except OSError as err:
+        raise InputError(
+            f"cannot write into {base} ({err.strerror or err})", where=str(out), fix=fix
+        ) from None
 
 
 def scene_for_export(scene: SceneSpec) -> SceneSpec:
@@ -86,21 +124,25 @@ def dump_json(data: Any) -> str:
 
 def write_scene_folder(
     compiled: CompiledScene,
-    out: Path,
+    out: Path | PreparedOutput,
     *,
     overwrite: bool = False,
     extra_json: dict[str, Any] | None = None,
     extra_text: dict[str, str] | None = None,
     keep_from: Path | None = None,
+    finish: Callable[[Path], None] | None = None,
 ) -> Path:
     """Write ``compiled`` to ``out`` (see module docstring) and return ``out``.
 
+    ``out``: a path (checked here with ``overwrite``) or what :func:`prepare_output` returned.
     ``extra_json`` and ``extra_text`` map file names in ``out`` to JSON data and to text, written
     in the same atomic step as the scene. ``keep_from``: a folder (usually ``out`` itself) whose
-    other entries (reports, renders) are copied over unchanged.
+    other entries (reports, renders) are copied over unchanged. ``finish(tmp)`` runs last on the
+    filled temporary folder, before it is renamed into place (it may add files: renders, a
+    record of the whole run).
     """
-    out = Path(out)
-    prepare_output(out, overwrite)
+    prepared = out if isinstance(out, PreparedOutput) else prepare_output(Path(out), overwrite)
+    out = prepared.path
     extras: dict[str, str | bytes] = {
         name: dump_json(data) for name, data in (extra_json or {}).items()
     }
@@ -111,6 +153,8 @@ def write_scene_folder(
     def fill(tmp: Path) -> None:
         _write_tree(compiled, tmp, extras)
         _copy_entries(keep, tmp)
+        if finish is not None:
+            finish(tmp)
 
     try:
         replace_folder(out, fill)
@@ -121,12 +165,11 @@ def write_scene_folder(
 
 def robot_learning_files(compiled: CompiledScene) -> dict[str, str | bytes]:
     """``objects.json``, ``navmap.json``, ``navmap.png`` and (with a robot) ``robot.json``."""
-    from holomj.formats.navmap import build_navmap
-    from holomj.formats.objects_json import objects_record
+    from holomj.jobs.robot_learning import build_navmap, objects_json
 
     navmap = build_navmap(compiled)
     files: dict[str, str | bytes] = {
-        OBJECTS_JSON: dump_json(objects_record(compiled)),
+        OBJECTS_JSON: dump_json(objects_json(compiled)),
         NAVMAP_JSON: dump_json(navmap.to_json()),
         NAVMAP_PNG: navmap.to_png(),
     }

@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from holomj.retrieval.materials import TextureImport
+    from holomj.retrieval.texture_import import TextureImport
 
 
 @dataclass(frozen=True)
@@ -27,8 +27,8 @@ def import_materials(
     texture_size_m: float = 1.0,
 ) -> TextureImport:
     """Add every colour texture of ``folder`` to the user materials at ``root`` (default
-    ``$HOLOMJ_HOME/materials``); see :func:`holomj.retrieval.materials.import_textures`."""
-    from holomj.retrieval.materials import import_textures
+    ``$HOLOMJ_HOME/materials``); see :func:`holomj.retrieval.texture_import.import_textures`."""
+    from holomj.retrieval.texture_import import import_textures
 
     return import_textures(folder, root=root, surface=surface, texture_size_m=texture_size_m)
 

@@ -9,13 +9,12 @@ from typing import TYPE_CHECKING, Literal
 
 from holomj.errors import InputError
 from holomj.jobs.stage_log import Listener, StageLog
-from holomj.spec.choices import one_of
 
 if TYPE_CHECKING:
     from holomj.spec.plan import ScenePlan
 
-PlannerName = Literal["offline", "llm"]
-PLANNERS: tuple[PlannerName, ...] = ("offline", "llm")
+Planner = Literal["offline", "llm"]
+PLANNERS: tuple[Planner, ...] = ("offline", "llm")
 
 
 @dataclass(frozen=True)
@@ -23,7 +22,7 @@ class PlanOptions:
     """What the plan stage needs: the seed, which planner, the text model and the LLM server."""
 
     seed: int = 0
-    planner: Literal["offline", "llm"] = "offline"
+    planner: str = "offline"  # checked by check_planner
     text_model: Path | None = None
     llm_base_url: str | None = None
     llm_model: str | None = None
@@ -31,14 +30,12 @@ class PlanOptions:
     llm_config: Path | None = None
 
 
-def check_planner(planner: str) -> PlannerName:
+def check_planner(planner: str) -> Planner:
     """``planner`` when it is a planner's name, else an InputError naming ``--planner``."""
-    chosen = one_of(planner, PLANNERS)
-    if chosen is None:
-        raise InputError(
-            f"unknown planner {planner!r}", where="--planner", fix="use offline or llm"
-        )
-    return chosen
+    for name in PLANNERS:
+        if planner == name:
+            return name
+    raise InputError(f"unknown planner {planner!r}", where="--planner", fix="use offline or llm")
 
 
 def plan_scene(

@@ -33,7 +33,7 @@ from typing import Any
 from holomj.errors import HolomjError, InputError
 from holomj.jobs.pointed_drop import drop_at
 from holomj.library.store import AssetLibrary
-from holomj.plan.llm_parse import LLMResponseError
+from holomj.plan.llm_json import LLMResponseError
 from holomj.spec.scene import SceneSpec
 
 

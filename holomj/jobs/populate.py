@@ -29,8 +29,10 @@ from typing import TYPE_CHECKING, Any
 from holomj.errors import HolomjError, InputError
 from holomj.file_names import POPULATE_REPORT, RENDERS_DIR, REPORT_HTML, REPORT_JSON
 from holomj.jobs.folder import (
+    PreparedOutput,
     attach_folder_robot,
     open_library,
+    prepare_output,
     read_json_report,
     read_scene,
     require_scene_folder,
@@ -126,6 +128,7 @@ def populate_folder(
     ``instruction``, or an unknown planner.
     """
     folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
+    prepared = prepare_output(folder, overwrite=True)  # rewritable, before any work
     requests, instruction = _checked_arguments(requests, instruction, planner, seed, max_attempts)
     scene = read_scene(folder)
     libraries = [open_library(folder)]
@@ -158,7 +161,7 @@ def populate_folder(
         run["planner"] = "llm" if chat is not None else "offline"
     if notes:
         run["notes"] = notes
-    report = _write_populated(folder, result_scene, library, run, with_robot)
+    report = _write_populated(folder, prepared, result_scene, library, run, with_robot)
     return PopulateResult(
         folder=str(folder),
         receptacle=receptacle_id,
@@ -327,13 +330,15 @@ def _pointing_run(
 
 def _write_populated(
     folder: Path,
+    prepared: PreparedOutput,
     scene: SceneSpec,
     library: AssetLibrary,
     run: dict[str, Any],
     with_robot: Callable[[CompiledScene], CompiledScene],
 ) -> dict[str, Any]:
-    """Compile the populated scene and write it back into ``folder`` with its validation (when
-    the folder had one) and the populate report; returns the report."""
+    """Compile the populated scene and write it back into ``folder`` (``prepared`` for writing)
+    with its validation (when the folder had one) and the populate report; returns the
+    report."""
     compiled = with_robot(compile_scene(scene, library))
     written: dict[str, Any] = {}
     if (folder / REPORT_JSON).exists():
@@ -349,7 +354,7 @@ def _write_populated(
     stale = [name for name in (RENDERS_DIR, REPORT_HTML) if (folder / name).exists()]
     report = {**run, "runs": [*previous, run], "stale_files": stale}
     written[POPULATE_REPORT] = report
-    write_scene_folder(compiled, folder, overwrite=True, extra_json=written, keep_from=folder)
+    write_scene_folder(compiled, prepared, extra_json=written, keep_from=folder)
     return report
 
 

@@ -33,21 +33,18 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any
 
 from holomj.atomic import replace_folder
-from holomj.errors import ExportError, HolomjError, InputError
+from holomj.errors import ExportError, InputError
 from holomj.jobs.folder import dump_json, prepare_output, require_scene_folder
+from holomj.jobs.refine_measure import RefineContext
+from holomj.jobs.refine_rounds import REFINE_DIR, Planner, RefineRun
 from holomj.seeds import MAX_SEED
 
 REFINE_JSON = "refine.json"
-REFINE_DIR = "refine"
 MAX_ROUNDS = 20
 MAX_INSTRUCTION_CHARS = 2000
-REFINE_SCHEMA_VERSION = "1.0"
-MAX_PROBLEMS = 20
-
-Planner = Literal["offline", "llm"]
 
 
 @dataclass
@@ -82,68 +79,6 @@ class RefineResult:
         return round(sum(times) / len(times), 3) if times else 0.0
 
 
-@dataclass
-class _Measure:
-    report: Any
-    checks: list[dict[str, Any]]
-    score: dict[str, Any]
-    findings: list[dict[str, Any]]
-    valid: bool
-    seconds: float
-
-    def to_json(self) -> dict[str, Any]:
-        return {
-            **self.score,
-            "valid": self.valid,
-            "checks": self.checks,
-            "findings": self.findings,
-            "seconds": round(self.seconds, 3),
-        }
-
-
-class _Context:
-    """The fixed inputs of a refine run: the instruction and the two annotations."""
-
-    def __init__(self, folder: Path, text: str) -> None:
-        from holomj.evaluation.plan_spec import spec_from_plan
-        from holomj.evaluation.vocabulary import Vocabulary
-        from holomj.jobs.eval import read_plan
-        from holomj.jobs.refine_views import scene_summary
-        from holomj.refinement.goals import adjust_plan_spec, instruction_spec
-        from holomj.refinement.instruction import read_instruction
-
-        self.summary = scene_summary(folder)
-        self.instruction = read_instruction(text, self.summary)
-        self.vocab = Vocabulary.load()
-        plan = read_plan(folder)
-        plan_spec = spec_from_plan(plan, self.vocab, own=True) if plan is not None else None
-        self.plan_spec = adjust_plan_spec(plan_spec, self.instruction)
-        self.spec = instruction_spec(self.instruction, self.summary)
-
-    def measure(self, folder: Path) -> _Measure:
-        from holomj.evaluation.fidelity import Scorer
-        from holomj.file_names import REPORT_JSON
-        from holomj.jobs.eval import evaluate
-        from holomj.jobs.folder import read_json_report
-        from holomj.jobs.refine_findings import findings
-        from holomj.refinement.goals import instruction_checks, refine_score
-
-        start = time.perf_counter()
-        report = evaluate(folder, spec=self.plan_spec) if self.plan_spec else evaluate(folder)
-        scorer = Scorer(folder, self.spec, self.vocab)
-        checks = instruction_checks([*scorer.counts(), *scorer.relations()])
-        stability = read_json_report(folder, REPORT_JSON)
-        valid = bool(stability.get("ok")) if isinstance(stability, dict) else False
-        return _Measure(
-            report=report,
-            checks=checks,
-            score=refine_score(report.scores, checks),
-            findings=findings(report),
-            valid=valid,
-            seconds=time.perf_counter() - start,
-        )
-
-
 def refine(
     folder: Path | str,
     instruction: str,
@@ -173,25 +108,10 @@ def refine(
     or overlong instruction, bad numbers, an unknown planner or no LLM configured, and
     :class:`~holomj.errors.OutputExistsError` when ``out`` exists (without ``overwrite``).
     """
-    from holomj.refinement.safety import MAX_OPS_PER_ROUND
-    from holomj.spec.edit import MAX_OPERATIONS
-
     start = time.perf_counter()
     folder = require_scene_folder(Path(folder), "holomj generate' or 'holomj compile")
-    text = " ".join(str(instruction or "").split())
-    if not text:
-        raise InputError("empty instruction", where="--instruction", fix="say what to change")
-    if len(text) > MAX_INSTRUCTION_CHARS:
-        raise InputError(f"longer than {MAX_INSTRUCTION_CHARS} characters", where="--instruction")
-    if not 1 <= rounds <= MAX_ROUNDS:
-        raise InputError(f"must lie in [1, {MAX_ROUNDS}]", where="--rounds")
-    max_ops = MAX_OPS_PER_ROUND if max_ops is None else max_ops
-    if not 1 <= max_ops <= MAX_OPERATIONS:
-        raise InputError(f"must lie in [1, {MAX_OPERATIONS}]", where="--max-ops")
-    if planner not in ("offline", "llm"):
-        raise InputError(f"unknown planner {planner!r}", where="--planner", fix="offline or llm")
-    if not 0 <= seed <= MAX_SEED:
-        raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
+    text = _instruction_text(instruction)
+    max_ops = _checked_numbers(rounds, max_ops, planner, seed)
     target = Path(out) if out is not None else folder
     in_place = target.resolve() == folder.resolve()
     if not in_place:
@@ -204,13 +124,13 @@ def refine(
         chat = VisionChat(config, images=images_enabled(images), seed=seed, log=log)
     emit = log or (lambda line: None)
 
-    context = _Context(folder, text)
+    context = RefineContext(folder, text)
     for note in context.instruction.notes:
         emit(f"instruction: {note}")
     target.absolute().parent.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=f".{target.name}.refine-", dir=target.absolute().parent))
     try:
-        run = _Run(
+        run = RefineRun(
             context, folder, work, rounds, planner, chat, seed, library_path, max_ops,
             (render, width, height), emit,
         )  # fmt: skip
@@ -235,6 +155,34 @@ def refine(
     )
 
 
+def _instruction_text(instruction: str) -> str:
+    """The instruction on one line; refused when empty or overlong."""
+    text = " ".join(str(instruction or "").split())
+    if not text:
+        raise InputError("empty instruction", where="--instruction", fix="say what to change")
+    if len(text) > MAX_INSTRUCTION_CHARS:
+        raise InputError(f"longer than {MAX_INSTRUCTION_CHARS} characters", where="--instruction")
+    return text
+
+
+def _checked_numbers(rounds: int, max_ops: int | None, planner: str, seed: int) -> int:
+    """Refuse rounds, operations per round, planner or seed out of range; the operations per
+    round (default :data:`holomj.refinement.safety.MAX_OPS_PER_ROUND`)."""
+    from holomj.refinement.safety import MAX_OPS_PER_ROUND
+    from holomj.spec.edit import MAX_OPERATIONS
+
+    if not 1 <= rounds <= MAX_ROUNDS:
+        raise InputError(f"must lie in [1, {MAX_ROUNDS}]", where="--rounds")
+    max_ops = MAX_OPS_PER_ROUND if max_ops is None else max_ops
+    if not 1 <= max_ops <= MAX_OPERATIONS:
+        raise InputError(f"must lie in [1, {MAX_OPERATIONS}]", where="--max-ops")
+    if planner not in ("offline", "llm"):
+        raise InputError(f"unknown planner {planner!r}", where="--planner", fix="offline or llm")
+    if not 0 <= seed <= MAX_SEED:
+        raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
+    return max_ops
+
+
 def resolve_llm_config(value: Any = None) -> Any:
     """An :class:`~holomj.plan.llm_config.LLMConfig`: ``value`` itself, or made from a dict of
     ``base_url``, ``model``, ``api_key``, ``config_file`` (None values left to the environment
@@ -249,305 +197,6 @@ def resolve_llm_config(value: Any = None) -> Any:
     if unknown:
         raise InputError(f"unknown LLM setting {unknown[0]!r}", where="llm_config")
     return load_llm_config(**settings)
-
-
-class _Run:
-    """The rounds of one refine run."""
-
-    def __init__(
-        self,
-        context: _Context,
-        folder: Path,
-        work: Path,
-        rounds: int,
-        planner: Planner,
-        chat: Any,
-        seed: int,
-        library_path: Path | None,
-        max_ops: int,
-        render: tuple[bool, int, int],
-        log: Callable[[str], None],
-    ) -> None:
-        self.context, self.source, self.work = context, folder, work
-        self.max_rounds, self.planner, self.chat = rounds, planner, chat
-        self.seed, self.library_path, self.max_ops = seed, library_path, max_ops
-        self.render, self.width, self.height = render
-        self.log = log
-        self.current = folder
-        self.summary = context.summary
-        self.measures: list[_Measure] = []
-        self.rounds: list[dict[str, Any]] = []
-        self.images: dict[str, bytes] = {}
-        self.tried: set[str] = set()
-        self.solo = False  # after a rejected round of several edits: one edit per round
-        self.feedback: list[str] = []
-        self.stopped = ""
-
-    def go(self) -> None:
-        before = self.context.measure(self.current)
-        self.measures.append(before)
-        self.log(f"before: score {before.score['score']:.4f}, " + _checks_line(before.checks))
-        understood = bool(self.context.instruction.items)
-        for number in range(1, self.max_rounds + 1):
-            done = all(c["held"] for c in before.checks) and not before.findings and before.valid
-            ask_anyway = self.chat is not None and not understood and number == 1
-            if done and not ask_anyway:
-                self.stopped = "the instruction's checks all hold and nothing else to fix"
-                if not understood:
-                    self.stopped = "the instruction names nothing the offline planner can do"
-                break
-            row = self.round(number, before)
-            self.rounds.append(row)
-            if row["decision"] == "kept":
-                before = self.measures[-1]
-            if row["decision"] in ("no operations", "planner failed"):
-                self.stopped = row["reasons"][-1]
-                break
-        else:
-            self.stopped = f"{self.max_rounds} round(s) done"
-        if not self.stopped:
-            self.stopped = "done"
-        self.log(f"stopped: {self.stopped}")
-
-    def round(self, number: int, before: _Measure) -> dict[str, Any]:
-        from holomj.jobs.edit import apply_edits
-        from holomj.jobs.refine_views import render_views, scene_summary
-        from holomj.refinement.goals import not_worse
-
-        start = time.perf_counter()
-        timings: dict[str, float] = {}
-        row: dict[str, Any] = {"round": number, "planner": self.planner}
-        summary = self.summary
-        views: list[tuple[str, bytes]] = []
-        if self.render:
-            rooms = self._rooms(before)
-            shown = render_views(self.current, rooms, width=self.width, height=self.height)
-            timings["render"] = shown.seconds
-            for name, png in shown.images.items():
-                path = f"{REFINE_DIR}/round_{number}/{name}"
-                self.images[path] = png
-                views.append((shown.captions.get(name, name), png))
-            row["images"] = [f"{REFINE_DIR}/round_{number}/{n}" for n in shown.images]
-            if shown.error:
-                row["render_error"] = shown.error
-                self.log(f"round {number}: render failed ({shown.error}); going on without images")
-        clock = time.perf_counter()
-        try:
-            operations, refused = self._plan(number, summary, before, views, row)
-        except HolomjError as err:
-            timings["plan"] = round(time.perf_counter() - clock, 3)
-            timings["total"] = round(time.perf_counter() - start, 3)
-            row.update(
-                decision="planner failed",
-                reasons=[err.one_line()],
-                operations=[],
-                timings=timings,
-                score_before=before.score["score"],
-            )
-            if isinstance(getattr(err, "record", None), dict):
-                row["llm"] = err.record
-            self.log(f"round {number}: planner failed: {err.one_line()}")
-            return row
-        timings["plan"] = round(time.perf_counter() - clock, 3)
-        row["operations"] = operations
-        if refused:
-            row["refused_by_checks"] = refused
-        if not operations:
-            timings["total"] = round(time.perf_counter() - start, 3)
-            row.update(
-                decision="no operations",
-                reasons=["the planner proposed nothing (new) to do"],
-                timings=timings,
-                score_before=before.score["score"],
-            )
-            self.log(f"round {number}: nothing (new) to do")
-            return row
-        self.log(f"round {number}: {len(operations)} operation(s)")
-        clock = time.perf_counter()
-        folder = self.work / f"round_{number}"
-        try:
-            report = apply_edits(
-                self.current,
-                operations,
-                out=folder,
-                seed=self.seed,
-                library_path=self.library_path,
-                overwrite=True,
-                log=lambda line: self.log(f"  {line}"),
-            )
-        except HolomjError as err:
-            timings["edit"] = round(time.perf_counter() - clock, 3)
-            timings["total"] = round(time.perf_counter() - start, 3)
-            row.update(
-                decision="rejected",
-                reasons=[f"the edit failed: {err.one_line()}"],
-                timings=timings,
-                score_before=before.score["score"],
-            )
-            self.feedback.append(f"round {number}: the edit failed: {err.one_line()}")
-            return row
-        timings["edit"] = round(time.perf_counter() - clock, 3)
-        row["outcomes"] = [
-            {"index": o.index, "op": o.op, "status": o.status, "reason": o.reason, "added": o.added}
-            for o in report.operations
-        ]
-        row["validation"] = report.validation
-        after = self.context.measure(folder)
-        timings["eval"] = round(after.seconds, 3)
-        reasons = [f"{report.applied}/{len(report.operations)} operation(s) applied"]
-        valid = bool(report.validation and report.validation.get("ok"))
-        reasons.append(
-            "the edited scene validates" if valid else "the edited scene does NOT validate"
-        )
-        better = not_worse(after.score["score"], before.score["score"])
-        change = _score_change(before.score, after.score)
-        reasons.append(
-            f"score {before.score['score']:.4f} -> {after.score['score']:.4f}"
-            + (" (not worse)" if better else f" (worse: {change})")
-        )
-        kept = report.applied > 0 and valid and better
-        row.update(
-            decision="kept" if kept else "rejected",
-            reasons=reasons,
-            score_before=before.score["score"],
-            score_after=after.score["score"],
-            before=before.to_json(),
-            after=after.to_json(),
-        )
-        for outcome in report.operations:
-            if outcome.status == "refused":
-                self.feedback.append(
-                    f"round {number}: operation {outcome.index} ({outcome.op}) refused by the "
-                    f"edit: {outcome.reason}"
-                )
-        if kept:
-            self.current = folder
-            self.measures.append(after)
-            self.summary = scene_summary(folder)
-            self.solo = False
-        else:
-            self.feedback.append(f"round {number} was rejected: {'; '.join(reasons)}")
-            self._retry_alone(operations, report)
-        timings["total"] = round(time.perf_counter() - start, 3)
-        row["timings"] = timings
-        self.log(
-            f"round {number}: {row['decision']} ({'; '.join(reasons)}) in {timings['total']:.1f} s"
-        )
-        return row
-
-    def _retry_alone(self, operations: list[dict[str, Any]], report: Any) -> None:
-        """After a rejected round of several applied edits, which of them made it worse is
-        not known: they may be proposed again, one per round."""
-        from holomj.refinement.offline import signature
-
-        applied = [op for op, o in zip(operations, report.operations) if o.status == "applied"]
-        if len(applied) > 1 and not self.solo:
-            self.solo = True
-            for op in applied:
-                self.tried.discard(signature(op))
-
-    def _plan(
-        self,
-        number: int,
-        summary: Any,
-        before: _Measure,
-        views: list[tuple[str, bytes]],
-        row: dict[str, Any],
-    ) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
-        if self.chat is None:
-            from holomj.refinement.offline import propose
-
-            proposal = propose(
-                self.context.instruction,
-                summary,
-                before.checks,
-                before.findings,
-                self.tried,
-                max_ops=1 if self.solo else self.max_ops,
-            )
-            row["why"] = proposal.reasons
-            return proposal.operations, []
-        from holomj.refinement.llm import propose as ask_model
-
-        problems = [f"{metric}: {what}" for metric, what in before.report.problems()]
-        problems += [f"{f['metric']}: {f['object']} {f['reason']}" for f in before.findings]
-        feedback, self.feedback = self.feedback, []
-        proposal = ask_model(
-            self.chat,
-            self.context.instruction,
-            summary,
-            before.checks,
-            problems[:MAX_PROBLEMS],
-            feedback,
-            views,
-            round_number=number,
-            rounds=self.max_rounds,
-            max_ops=self.max_ops,
-        )
-        row["llm"] = proposal.record
-        if proposal.renamed:
-            row["renamed_ids"] = proposal.renamed
-        for refused in proposal.refused:
-            self.feedback.append(
-                f"round {number}: operation {refused['index']} ({refused['op']}) refused: "
-                f"{refused['reason']}"
-            )
-        return proposal.operations, proposal.refused
-
-    def _rooms(self, before: _Measure) -> list[str]:
-        rooms = list(self.context.instruction.rooms)
-        for finding in before.findings:
-            obj = self.summary.object(finding["object"])
-            if obj is not None and obj.room and obj.room not in rooms:
-                rooms.append(obj.room)
-        return rooms or [r.id for r in self.summary.rooms]
-
-    def record(self, text: str, target: Path, seconds: float) -> dict[str, Any]:
-        first, last = self.measures[0], self.measures[-1]
-        times = [r["timings"]["total"] for r in self.rounds if "timings" in r]
-        usage = [r["llm"] for r in self.rounds if isinstance(r.get("llm"), dict)]
-        record: dict[str, Any] = {
-            "schema_version": REFINE_SCHEMA_VERSION,
-            "source": str(self.source),
-            "output": str(target),
-            "instruction": self.context.instruction.to_json(),
-            "planner": self.planner,
-            "seed": self.seed,
-            "score": {
-                "definition": "mean of the measured holomj eval scores and of the instruction's "
-                "checks (1 met, 0 not); a round is kept when the edited scene validates and "
-                "the score does not fall",
-                "before": first.score["score"],
-                "after": last.score["score"],
-            },
-            "before": first.to_json(),
-            "after": last.to_json(),
-            "rounds": self.rounds,
-            "kept": sum(1 for r in self.rounds if r["decision"] == "kept"),
-            "stopped": self.stopped,
-            "ok": last.valid
-            and all(c["held"] for c in last.checks)
-            and (bool(last.checks) or any(r["decision"] == "kept" for r in self.rounds)),
-            "seconds": round(seconds, 3),
-            "seconds_per_round": round(sum(times) / len(times), 3) if times else 0.0,
-        }
-        if self.chat is not None:
-            record["llm"] = {
-                "model": self.chat.config.model,
-                "endpoint": self.chat.config.endpoint,
-                "images": self.chat.images,
-                "text_only_reason": self.chat.text_only_reason,
-                "calls": sum(u.get("calls", 0) for u in usage),
-                "prompt_tokens": sum(u.get("prompt_tokens", 0) for u in usage),
-                "completion_tokens": sum(u.get("completion_tokens", 0) for u in usage),
-                "images_sent": sum(u.get("images", 0) for u in usage),
-                "seconds": round(sum(u.get("seconds", 0.0) for u in usage), 3),
-            }
-        if self.current != self.source:
-            record["stale_files"] = [
-                n for n in ("renders", "report.html") if (self.current / n).exists()
-            ]
-        return record
 
 
 def _write(current: Path, target: Path, record: dict[str, Any], images: dict[str, bytes]) -> None:
@@ -572,21 +221,3 @@ def _write(current: Path, target: Path, record: dict[str, Any], images: dict[str
         replace_folder(target, fill)
     except OSError as err:
         raise ExportError(f"writing failed: {err}", where=str(target)) from None
-
-
-def _checks_line(checks: list[dict[str, Any]]) -> str:
-    met = sum(1 for c in checks if c["held"])
-    return f"instruction {met}/{len(checks)} checks met"
-
-
-def _score_change(before: dict[str, Any], after: dict[str, Any]) -> str:
-    """The metrics that fell, and the instruction's checks."""
-    parts = []
-    for key, value in before.get("metrics", {}).items():
-        new = after.get("metrics", {}).get(key)
-        if new is not None and new < value - 1e-9:
-            parts.append(f"{key} {value:.3f} -> {new:.3f}")
-    met_before, met_after = before["instruction_met"][0], after["instruction_met"][0]
-    if met_after < met_before:
-        parts.append(f"instruction checks {met_before} -> {met_after}")
-    return ", ".join(parts) or "rounding"

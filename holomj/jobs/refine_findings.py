@@ -6,17 +6,18 @@
   object that fences it off: of the objects whose footprints come within the robot's reach
   (radius + two cells) of both the pocket and the reached floor, the smallest (``navigability``).
 
-Each finding is ``{"metric", "object", "reason"}``; pockets smaller than
+Each finding is a :class:`~holomj.refinement.finding.Finding`; pockets smaller than
 :data:`MIN_POCKET_M2` are ignored.
 """
 
 from __future__ import annotations
 
-from typing import Any
+from pathlib import Path
 
 import numpy as np
 
 from holomj.evaluation.report import EvalReport
+from holomj.refinement.finding import Finding
 
 MIN_POCKET_M2 = 0.25
 MAX_FINDINGS = 12
@@ -27,39 +28,33 @@ def _blocker(text: str) -> str:
     return text.split(" (", 1)[0].strip()
 
 
-def findings(report: EvalReport) -> list[dict[str, Any]]:
+def findings(report: EvalReport) -> list[Finding]:
     """The findings of one evaluation (see the module docstring)."""
-    out: list[dict[str, Any]] = []
+    out: list[Finding] = []
     details = report.details
     for row in details.get("doors", []):
         for text in [] if row.get("clear") else row.get("blocking", []):
             out.append(
-                {
-                    "metric": "doors_clear",
-                    "object": _blocker(text),
-                    "reason": f"blocks {row['door']}",
-                }
+                Finding(metric="doors_clear", object=_blocker(text), reason=f"blocks {row['door']}")
             )
     for row in details.get("windows", []):
         for text in [] if row.get("clear") else row.get("blocking", []):
             out.append(
-                {
-                    "metric": "windows_clear",
-                    "object": _blocker(text),
-                    "reason": f"hides {row['window']}",
-                }
+                Finding(
+                    metric="windows_clear", object=_blocker(text), reason=f"hides {row['window']}"
+                )
             )
     out += fences(report.folder)
     seen: set[str] = set()
     unique = []
     for finding in out:
-        if finding["object"] not in seen:
-            seen.add(finding["object"])
+        if finding.object not in seen:
+            seen.add(finding.object)
             unique.append(finding)
     return unique[:MAX_FINDINGS]
 
 
-def fences(folder: str) -> list[dict[str, Any]]:
+def fences(folder: str) -> list[Finding]:
     """The objects that fence off unreachable floor (see the module docstring)."""
     from scipy import ndimage
     from shapely import contains_xy
@@ -67,7 +62,7 @@ def fences(folder: str) -> list[dict[str, Any]]:
     from holomj.evaluation.folder import Scene
     from holomj.evaluation.reachability import robot_reach
 
-    scene = Scene(folder)
+    scene = Scene(Path(folder))
     grid = robot_reach(scene)
     if grid is None or not grid.entrance_found:
         return []
@@ -102,10 +97,10 @@ def fences(folder: str) -> list[dict[str, Any]]:
         room = grid.room_names[room_index] if 0 <= room_index < len(grid.room_names) else "?"
         _, object_id = min(candidates)
         out.append(
-            {
-                "metric": "navigability",
-                "object": object_id,
-                "reason": f"fences off {area:.2f} m2 of floor in {room} near ({x:.2f}, {y:.2f})",
-            }
+            Finding(
+                metric="navigability",
+                object=object_id,
+                reason=f"fences off {area:.2f} m2 of floor in {room} near ({x:.2f}, {y:.2f})",
+            )
         )
     return out

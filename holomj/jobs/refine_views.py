@@ -14,6 +14,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -63,9 +64,9 @@ def scene_summary(folder: Path) -> SceneSummary:
                 id=obj.id,
                 category=str(row.get("category") or obj.asset),
                 room=obj.room or row.get("room"),
-                position=tuple(float(v) for v in obj.position),  # type: ignore[arg-type]
+                position=_vec3(obj.position),
                 yaw_deg=float(row.get("yaw_deg", obj.yaw_deg) or 0.0),
-                size=size if len(size) == 3 else (0.0, 0.0, 0.0),  # type: ignore[arg-type]
+                size=_vec3(size) if len(size) == 3 else (0.0, 0.0, 0.0),
                 support=obj.support,
                 placement=placement,
                 static=bool(row.get("static", obj.static)),
@@ -216,9 +217,9 @@ def render_receptacle(
         pixels = renderer.render()
         gl_camera = renderer.scene.camera[0]
         pinhole = PinholeCamera(
-            position=tuple(float(v) for v in np.asarray(gl_camera.pos)),  # type: ignore[arg-type]
-            forward=tuple(float(v) for v in np.asarray(gl_camera.forward)),  # type: ignore[arg-type]
-            up=tuple(float(v) for v in np.asarray(gl_camera.up)),  # type: ignore[arg-type]
+            position=_vec3(np.asarray(gl_camera.pos)),
+            forward=_vec3(np.asarray(gl_camera.forward)),
+            up=_vec3(np.asarray(gl_camera.up)),
             fovy_deg=float(rs.model.vis.global_.fovy),
             width=width,
             height=height,
@@ -231,3 +232,9 @@ def render_receptacle(
             renderer.disable_depth_rendering()
     seconds = round(time.perf_counter() - start, 3)
     return ReceptacleView(png_bytes(pixels), pinhole, seconds, distances)
+
+
+def _vec3(values: Iterable[float]) -> tuple[float, float, float]:
+    """Three numbers as a tuple of floats."""
+    x, y, z = (float(v) for v in values)
+    return (x, y, z)

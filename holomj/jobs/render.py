@@ -144,12 +144,15 @@ def render_folder(
     segmentation: bool = False,
     shadows: bool = True,
     compiled: CompiledScene | None = None,
+    recorded_out: Path | None = None,
 ) -> RenderSummary:
     """Render the holomj output folder ``out`` into ``out/renders/`` (see module docstring).
 
     ``compiled``: the folder's scene, compiled, when the caller holds it (``holomj generate``):
     its model and scene are rendered instead of loading ``scene.xml`` again (in its ``settled``
     keyframe when the model has one); a fallback to a child process still reads the folder.
+    ``recorded_out``: the folder's final path, when ``out`` is a temporary folder renamed into
+    place afterwards (what the summary and its manifest name).
     """
     out = Path(out)
     options = RenderOptions(parse_views(views), width, height, depth, segmentation, shadows)
@@ -162,13 +165,16 @@ def render_folder(
 
     def fill(tmp: Path) -> None:
         result["summary"] = _render_with_fallback(out, tmp, options, compiled, scene)
+        if recorded_out is not None:
+            result["summary"].out = str(recorded_out)
+            (tmp / MANIFEST).write_text(json.dumps(result["summary"].to_dict(), indent=2) + "\n")
 
     try:
         replace_folder(out / RENDERS_DIR, fill)
     except OSError as err:
         raise ExportError(f"writing the renders failed: {err}", where=str(out)) from None
     summary = result["summary"]
-    summary.out = str(out)
+    summary.out = str(recorded_out or out)
     return summary
 
 
@@ -294,12 +300,19 @@ def _relative(view: dict[str, Any]) -> dict[str, Any]:
     return view
 
 
-def write_report_html(out: Path, *, embed: bool = True, interactive: bool = True) -> Path:
+def write_report_html(
+    out: Path,
+    *,
+    embed: bool = True,
+    interactive: bool = True,
+    compiled: CompiledScene | None = None,
+) -> Path:
     """Write ``OUT/report.html`` from the folder's scene, assets, reports and renders.
 
     ``embed``: images as ``data:`` URIs (a page that stands alone); else linked relatively.
     ``interactive``: with the 3D view (the scene's GLB, colliders included, in its ``settled``
-    keyframe when it has one, like the images).
+    keyframe when it has one, like the images). ``compiled``: the folder's scene, compiled, when
+    the caller holds it (its model is used instead of loading ``scene.xml`` again).
     """
     out = Path(out)
     scene = _folder_scene(out)
@@ -307,7 +320,7 @@ def write_report_html(out: Path, *, embed: bool = True, interactive: bool = True
     if interactive:
         from holomj.formats.glb import scene_glb
 
-        model = load_scene_model(out)
+        model = compiled.model if compiled is not None else load_scene_model(out)
         glb = scene_glb(model, scene, qpos=settled_qpos(model), colliders=True)
     manifest = read_json_report(out, f"{RENDERS_DIR}/{MANIFEST}")
     manifest = manifest if isinstance(manifest, dict) else None

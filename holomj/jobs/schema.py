@@ -8,7 +8,7 @@ from holomj.jobs.folder import write_json_file
 
 
 def write_schema(kind: str = "scene", out: Path | str = "-") -> None:
-    """Write the JSON Schema of ``kind`` (scene, asset, library, report or plan) to ``out``
+    """Write the JSON Schema of ``kind`` (scene, asset, library, report, plan or task) to ``out``
     ('-': standard output); an unknown kind is an InputError listing the known ones."""
     from holomj.spec.schema import json_schema
 

@@ -149,7 +149,8 @@ def synthesise(
     """The asset of registered procedural ``category`` at ``size`` (x, y, z; None: default) in
     style ``seed`` with ``attributes``, in the library at ``root`` (written if new)."""
     from asset_pipeline.procedural import DEFAULT_LIBRARY_VERSION, generate_asset
-    from asset_pipeline.procedural.attributes import Attributes, parts_report
+    from asset_pipeline.procedural.attributes import Attributes
+    from asset_pipeline.procedural.conditioning import parts_report
 
     info, articulated = _generator_info(category)
     name = info.name
@@ -192,7 +193,7 @@ def synthesise(
         library=Path(root),
         notes=tuple(notes),
         folder=folder,
-        parts_how=parts_report(name, fitted, int(seed), wanted, articulated=articulated),
+        parts_how=parts_report(info, fitted, int(seed), wanted),
     )
 
 

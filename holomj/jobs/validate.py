@@ -15,6 +15,7 @@ from holomj.jobs.folder import (
     attach_folder_robot,
     load_for_physics,
     open_library,
+    prepare_output,
     scene_folder,
     write_scene_folder,
 )
@@ -79,6 +80,7 @@ def repair_folder(
 ) -> RepairOutcome:
     """Repair the holomj folder at ``path`` and write it back atomically (other files kept)."""
     folder = outcome_folder(path)
+    prepared = prepare_output(folder, overwrite=True)  # rewritable, before any work
     library = open_library(folder)
     loaded = load_for_physics(folder, furniture=furniture, library=library)
 
@@ -86,5 +88,5 @@ def repair_folder(
         return attach_folder_robot(compile_scene(scene, library, furniture=mode), folder)
 
     outcome = repair_scene(loaded, recompile, thresholds, furniture, sleep)
-    write_scene_folder(outcome.compiled, folder, overwrite=True, keep_from=folder)
+    write_scene_folder(outcome.compiled, prepared, keep_from=folder)
     return outcome

@@ -30,7 +30,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Annotated, Literal
+from typing import Annotated, Literal, get_args
 
 from pydantic import Field, ValidationError, model_validator
 
@@ -60,12 +60,11 @@ ConstraintKind = Literal[
     "face_same_as",
     "face_opposite_to",
 ]
-# Global kinds that place an object by the room's corners, windows or doors.
-PLACE_KINDS = frozenset(
-    {"corner", "centre", "under_window", "by_window", "by_door", "facing_window", "facing_door"}
-)
+# Global kinds that place an object by the room's windows or doors, and by its corners too.
+OPENING_KINDS = frozenset({"under_window", "by_window", "by_door", "facing_window", "facing_door"})
+PLACE_KINDS = frozenset({"corner", "centre"}) | OPENING_KINDS
 GLOBAL_KINDS = frozenset({"edge", "middle"}) | PLACE_KINDS
-ALL_KINDS: tuple[str, ...] = ConstraintKind.__args__  # type: ignore[attr-defined]
+ALL_KINDS: tuple[str, ...] = get_args(ConstraintKind)
 
 # The phrase that writes each kind in the text form.
 KIND_PHRASE: dict[str, str] = {
@@ -270,7 +269,7 @@ def _build(
     warnings: list[str], where: str, items: list[dict[str, str]], raw: str
 ) -> list[Constraint]:
     try:
-        return [Constraint(**item, source=raw.strip()[:1000]) for item in items]
+        return [Constraint.model_validate({**item, "source": raw.strip()[:1000]}) for item in items]
     except ValidationError as err:
         problem = err.errors(include_url=False)[0].get("msg", "invalid")
         warnings.append(f"{where}: {raw.strip()!r} ignored ({problem})")

@@ -76,7 +76,7 @@ DOOR_KIND_BY_ROOM: dict[str, DoorKind] = {
     "dining_room": "open",
 }
 DEFAULT_DOOR_KIND: DoorKind = "doorway"
-_CLOSEDNESS = {"open": 0, "doorframe": 1, "doorway": 2}
+_CLOSEDNESS: dict[DoorKind, int] = {"open": 0, "doorframe": 1, "doorway": 2}
 
 # Cost of walking through a room on the way to another one (higher: more private).
 PRIVACY: dict[str, float] = {
@@ -166,14 +166,19 @@ def window_sizes_m(kind: str) -> list[tuple[float, float]]:
 def door_kind(type_a: str, type_b: str, kinds: Mapping[str, str] | None = None) -> DoorKind:
     """The kind of a door between rooms of these types: the more closed of their kinds."""
     table: dict[str, str] = {**DOOR_KIND_BY_ROOM, **(dict(kinds) if kinds else {})}
-    ka = table.get(normal_type(type_a), DEFAULT_DOOR_KIND)
-    kb = table.get(normal_type(type_b), DEFAULT_DOOR_KIND)
-    for kind in (ka, kb):
-        if kind not in _CLOSEDNESS:
-            raise SpecError(
-                f"unknown door kind {kind!r}", where="kinds", fix="use doorway, doorframe or open"
-            )
-    return ka if _CLOSEDNESS[ka] >= _CLOSEDNESS[kb] else kb  # type: ignore[return-value]
+    ka = _known_kind(table.get(normal_type(type_a), DEFAULT_DOOR_KIND))
+    kb = _known_kind(table.get(normal_type(type_b), DEFAULT_DOOR_KIND))
+    return ka if _CLOSEDNESS[ka] >= _CLOSEDNESS[kb] else kb
+
+
+def _known_kind(kind: str) -> DoorKind:
+    """``kind`` as a door kind, or a :class:`SpecError` naming it."""
+    for known in _CLOSEDNESS:
+        if known == kind:
+            return known
+    raise SpecError(
+        f"unknown door kind {kind!r}", where="kinds", fix="use doorway, doorframe or open"
+    )
 
 
 def place_doors(

@@ -192,10 +192,10 @@ def plan_floor(
             where="entrance_room",
             fix=f"did you mean {hint}?" if hint else f"use one of {', '.join(ids)}",
         )
-    wishes = {tuple(sorted((i, ids.index(n)))) for i, r in enumerate(reqs) for n in r.adjacent_to}
+    wishes = {_pair(i, ids.index(n)) for i, r in enumerate(reqs) for n in r.adjacent_to}
     entrance_index = ids.index(entrance_room) if entrance_room else _default_entrance(reqs)
 
-    best: tuple[tuple[float, ...], list[list[tuple[int, int, int, int]]]] | None = None
+    best: tuple[tuple[float, ...], list[list[tuple[int, int, int, int, int]]]] | None = None
     total = sum(item.area for item in items) / 1e4  # m²
     widest = max(_min_width(item) for item in items)
     tries = 1 if len(items) == 1 else SEARCH_TRIES
@@ -209,8 +209,8 @@ def plan_floor(
         if best is None or key < best[0]:
             best = (key, rects)
     assert best is not None
-    rects = [r for row in best[1] for r in row]
-    by_index = {index: rect for index, *rect in rects}
+    placed = [r for row in best[1] for r in row]
+    by_index = {index: (x0, y0, x1, y1) for index, x0, y0, x1, y1 in placed}
     rooms = [
         Room(id=req.id, type=normal_type(req.type), polygon=_rect_polygon(*by_index[i]))
         for i, req in enumerate(reqs)
@@ -359,6 +359,11 @@ def _realise(rows: list[_Row], target: float) -> list[list[tuple[int, int, int, 
     return out
 
 
+def _pair(i: int, j: int) -> tuple[int, int]:
+    """The unordered pair of room indices ``i`` and ``j`` (the smaller first)."""
+    return (i, j) if i <= j else (j, i)
+
+
 def _score(
     rects: list[list[tuple[int, int, int, int, int]]],
     wishes: set[tuple[int, int]],
@@ -369,7 +374,7 @@ def _score(
     for i, a in enumerate(flat):
         for b in flat[i + 1 :]:
             if _shared_cm(a, b) >= MIN_SHARED_EDGE_M * 100:
-                touching.add(tuple(sorted((a[0], b[0]))))
+                touching.add(_pair(a[0], b[0]))
     unmet = sum(1 for pair in wishes if pair not in touching)
     width = max(r[3] for r in flat)
     height = max(r[4] for r in flat)

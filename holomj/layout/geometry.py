@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 import shapely
@@ -22,6 +23,9 @@ from shapely.geometry.polygon import orient
 
 FRONT: tuple[tuple[int, int], ...] = ((1, 0), (0, 1), (-1, 0), (0, -1))
 EPS = 1e-6
+Pose = tuple[int, int, int]  # a pose on the layout grid: x and y in grid units, yaw index
+CellRect = tuple[int, int, int, int]  # cells (i0, j0, i1, j1), the ends excluded
+Coordinate = TypeVar("Coordinate", float, np.ndarray)  # one value, or an array of them
 ADJACENT_GAP_M = 0.45  # 'adjacent to': footprints at most this far apart
 # How far a furnished room's layout polygon lies inside its wall surfaces (beyond half the wall
 # thickness): furniture laid out against it never touches a wall.
@@ -87,8 +91,9 @@ class WallSegment:
                 return k
         return None
 
-    def locate(self, point: Sequence[float]) -> tuple[float, float]:
-        """Distance along the wall from ``a`` and distance into the room from the wall line."""
+    def locate(self, point: Sequence[Coordinate]) -> tuple[Coordinate, Coordinate]:
+        """Distance along the wall from ``a`` and distance into the room from the wall line (of
+        one point, or of arrays of x and y)."""
         tx, ty = self.tangent
         px, py = point[0] - self.a[0], point[1] - self.a[1]
         return px * tx + py * ty, -px * ty + py * tx
@@ -261,13 +266,13 @@ class Raster:
         return (a0, a1), (b0, b1)
 
 
-def merge_cells(mask: np.ndarray) -> list[tuple[int, int, int, int]]:
+def merge_cells(mask: np.ndarray) -> list[CellRect]:
     """Cover the true cells of ``mask`` (indexed ``[i, j]``) with disjoint rectangles.
 
     Returns half-open cell index ranges ``(i0, j0, i1, j1)``: runs along ``j`` in each column,
     merged across neighbouring columns with identical runs.
     """
-    rects: list[tuple[int, int, int, int]] = []
+    rects: list[CellRect] = []
     open_runs: dict[tuple[int, int], int] = {}
     nx = mask.shape[0]
     for i in range(nx + 1):

@@ -8,59 +8,18 @@ a layout with :func:`hard_checks`.
 
 from __future__ import annotations
 
-from pydantic import BaseModel, Field
+from collections.abc import Mapping
+
 from shapely.geometry import box
 
 from holomj.layout import geometry as geo
+from holomj.layout.layout_result import HardChecks
 from holomj.layout.room_problem import PreparedRoom
 
-Pose = tuple[int, int, int]
 
-
-class HardChecks(BaseModel):
-    """The post-check of the hard rules on the final layout (lists name offending objects)."""
-
-    overlaps: list[str] = Field(default_factory=list)
-    clearance: list[str] = Field(default_factory=list)
-    outside_room: list[str] = Field(default_factory=list)
-    door_zones: list[str] = Field(default_factory=list)
-    windows: list[str] = Field(default_factory=list)
-    facing_wall: list[str] = Field(default_factory=list)
-    walkable: bool | None = Field(
-        default=None, description="None when not applicable (fewer than two doors)."
-    )
-    walkable_detail: str = ""
-
-    @property
-    def ok(self) -> bool:
-        """True when no hard rule is broken."""
-        return not (
-            self.overlaps
-            or self.clearance
-            or self.outside_room
-            or self.door_zones
-            or self.windows
-            or self.facing_wall
-            or self.walkable is False
-        )
-
-    def problems(self, blocking: str) -> list[str]:
-        """The broken rules in words, in rule order; ``blocking`` is said when the way between
-        the doors is blocked ("the run blocks the way between the doors")."""
-        out = [
-            *self.overlaps,
-            *self.clearance,
-            *(f"{i} outside the room" for i in self.outside_room),
-            *self.door_zones,
-            *self.windows,
-            *(f"{i} faces a wall" for i in self.facing_wall),
-        ]
-        if self.walkable is False:
-            out.append(blocking)
-        return out
-
-
-def hard_checks(prep: PreparedRoom, poses: dict[int, Pose]) -> tuple[HardChecks, dict[int, str]]:
+def hard_checks(
+    prep: PreparedRoom, poses: Mapping[int, tuple[float, float, int]]
+) -> tuple[HardChecks, dict[int, str]]:
     """Test every hard rule in metres; also return, per offending object, the first problem."""
     g = prep.grid
     s = prep.settings

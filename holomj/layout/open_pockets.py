@@ -21,6 +21,7 @@ both the pocket and the floor reached is moved.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -29,10 +30,10 @@ from scipy import ndimage
 
 from holomj.layout import geometry as geo
 from holomj.layout.constraints import RELATION_WEIGHT
+from holomj.layout.geometry import Pose
 from holomj.layout.hard_rules import hard_checks
 from holomj.layout.room_problem import PreparedRoom
 
-Pose = tuple[int, int, int]
 ROBOT_RADIUS_M = 0.2
 # Free floor is where a slightly smaller robot fits (what another measure may count as free); it
 # is reached only through passages a slightly larger one fits through, so that a move counts
@@ -204,7 +205,7 @@ def open_pockets(prep: PreparedRoom, poses: dict[int, Pose]) -> dict[int, Pose]:
                         break
                     new_weight = satisfied_weight(prep, prep.metres(trial))
                     if new_weight < weight - 1e-9 and not _may_give_way(
-                        share, asked, lambda trial=trial: asked_weight(prep, trial)
+                        share, asked, partial(asked_weight, prep, trial)
                     ):
                         continue
                     # while the door is cut off, the largest share; among the moves that

@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 
@@ -184,7 +185,7 @@ def under_window_holds(
     for w in windows:
         if w.wall.facing_k != k:
             continue
-        along, off = w.wall.locate((bx, by))
+        along, off = w.wall.locate(cast(Sequence[float], (bx, by)))  # elementwise on arrays
         need = under_window_overlap(size[0], w)
         overlap = np.minimum(along + hw, w.a1) - np.maximum(along - hw, w.a0)
         result |= (off >= -EPS) & (off <= tolerance + EPS) & (overlap >= need - EPS)

@@ -4,8 +4,9 @@ verdicts after the layout.
 Every :class:`~holomj.spec.plan.PlanRelation` of a room expands into constraints over the
 instances that are in the layout, weighted :data:`RELATION_WEIGHT` (the templates' defaults
 weigh 1), with ``source`` ``prompt: <phrase>`` so that the layout's report can be read back per
-relation (:func:`relation_verdicts`). The expansion, per subject instance ``k`` (targets are
-spread over the target's instances like the template lines):
+relation (:func:`relation_verdicts`). Each kind's constraints and how they are spread over the
+instances are the vocabulary's (:data:`holomj.spec.relations.RELATION_KINDS`); per subject
+instance ``k`` (targets are spread over the target's instances like the template lines):
 
 =================  =========================================================================
 corner, middle,    the place constraint (``wall`` is ``edge``; one object in the middle is
@@ -32,34 +33,15 @@ scene.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 from holomj.layout.constraints import RELATION_WEIGHT, Constraint
 from holomj.layout.solve import ConstraintReport
 from holomj.spec.plan import PlanRelation, PlanRoom, instance_name
+from holomj.spec.relations import RELATIONS, STRUCTURAL_KINDS, RelationFacts
 
 SOURCE_PREFIX = "prompt: "
-_PLACE = {
-    "corner": "corner",
-    "wall": "edge",
-    "middle": "middle",
-    "under_window": "under_window",
-    "by_window": "by_window",
-    "by_door": "by_door",
-    "facing_window": "facing_window",
-    "facing_door": "facing_door",
-}
-_PAIR = {
-    "adjacent_to": ("adjacent_to",),
-    "near": ("near",),
-    "in_front_of": ("in_front_of",),
-    "behind": ("behind",),
-    "facing": ("face_to",),
-    "across_from": ("face_to",),
-    "around": ("adjacent_to", "face_to"),
-}
-STRUCTURAL_KINDS = frozenset({"on", "above", "ceiling"})
 
 
 def source_of(relation: PlanRelation) -> str:
@@ -74,47 +56,63 @@ def relation_constraints(plan_room: PlanRoom, present: Iterable[str]) -> list[Co
     out: list[Constraint] = []
     seen: set[tuple[str, str, str | None]] = set()
 
-    def add(obj: str, kind: str, target: str | None, source: str) -> None:
+    def add(obj: str, kinds: Iterable[str], target: str | None, source: str) -> None:
         if obj not in here or (target is not None and target not in here) or obj == target:
             return
-        c = Constraint(object=obj, kind=kind, target=target, weight=RELATION_WEIGHT, source=source)
-        if c.key not in seen:
-            seen.add(c.key)
-            out.append(c)
+        for kind in kinds:
+            c = Constraint.model_validate(
+                {"object": obj, "kind": kind, "target": target, "weight": RELATION_WEIGHT,
+                 "source": source}
+            )  # fmt: skip
+            if c.key not in seen:
+                seen.add(c.key)
+                out.append(c)
 
     for rel in plan_room.relations:
-        if rel.kind in STRUCTURAL_KINDS or rel.subject not in counts:
+        facts = RELATIONS[rel.kind]
+        if not facts.constraints or rel.subject not in counts:
             continue
         source = source_of(rel)
         subjects = [instance_name(rel.subject, k) for k in range(counts[rel.subject])]
-        if rel.kind in _PLACE:
-            for s in subjects:
-                add(s, _PLACE[rel.kind], None, source)
-                if rel.kind == "middle" and len(subjects) == 1:
-                    add(s, "centre", None, source)  # one thing in the middle: at its centre
-            continue
-        if rel.kind == "in_row":
-            for prev, s in zip(subjects, subjects[1:], strict=False):
-                for kind in ("adjacent_to", "face_same_as", "center_aligned"):
-                    add(s, kind, prev, source)
-            continue
-        if rel.target is None or rel.target not in counts:
-            continue
-        targets = [instance_name(rel.target, k) for k in range(counts[rel.target])]
-        if rel.kind == "both_sides":
-            for k, s in enumerate(subjects):
-                t = targets[min(k // 2, len(targets) - 1)]
-                side = "left_of" if k % 2 == 0 else "right_of"
-                for kind in (side, "adjacent_to", "face_same_as"):
-                    add(s, kind, t, source)
-            continue
-        for k, s in enumerate(subjects):
-            t = targets[k * len(targets) // len(subjects)]
-            for kind in _PAIR[rel.kind]:
-                add(s, kind, t, source)
-        if rel.kind == "across_from":
-            add(targets[0], "face_to", subjects[0], source)
+        if not facts.takes_target:
+            _spread_place(facts, subjects, add, source)
+        elif rel.target is not None and rel.target in counts:
+            targets = [instance_name(rel.target, k) for k in range(counts[rel.target])]
+            _spread_pair(facts, subjects, targets, add, source)
     return out
+
+
+_Add = Callable[[str, Iterable[str], str | None, str], None]
+
+
+def _spread_place(facts: RelationFacts, subjects: list[str], add: _Add, source: str) -> None:
+    """A place (no target): every instance gets the constraints (a lone one also ``alone``),
+    or, in a row, each gets them to the instance before it."""
+    if facts.expansion == "row":
+        for prev, s in zip(subjects, subjects[1:], strict=False):
+            add(s, facts.constraints, prev, source)
+        return
+    for s in subjects:
+        add(s, facts.constraints, None, source)
+        if len(subjects) == 1:
+            add(s, facts.alone, None, source)
+
+
+def _spread_pair(
+    facts: RelationFacts, subjects: list[str], targets: list[str], add: _Add, source: str
+) -> None:
+    """A relation to another object, spread over both objects' instances (see
+    :data:`holomj.spec.relations.Expansion`)."""
+    if facts.expansion == "sides":
+        for k, s in enumerate(subjects):
+            t = targets[min(k // 2, len(targets) - 1)]
+            side = "left_of" if k % 2 == 0 else "right_of"
+            add(s, (side, *facts.constraints), t, source)
+        return
+    for k, s in enumerate(subjects):
+        add(s, facts.constraints, targets[k * len(targets) // len(subjects)], source)
+    if facts.expansion == "mutual":
+        add(targets[0], facts.constraints, subjects[0], source)
 
 
 def _between_floor_objects(rel: PlanRelation, floor: set[str]) -> bool:

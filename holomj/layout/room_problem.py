@@ -12,6 +12,7 @@ on the wall line (within 5 cm of it).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Any, Literal
@@ -197,7 +198,11 @@ class RoomProblem(FrozenModel):
                         fix="sizes in metres need size_unit 'm'" if unit == "cm" else None,
                     )
         opening_ids: set[str] = set()
-        for kind, items in (("doors", self.doors), ("windows", self.windows)):
+        openings: tuple[tuple[str, Sequence[LayoutDoor | LayoutWindow]], ...] = (
+            ("doors", self.doors),
+            ("windows", self.windows),
+        )
+        for kind, items in openings:
             for index, opening in enumerate(items):
                 where = f"{kind}[{index}]"
                 if opening.id in opening_ids:

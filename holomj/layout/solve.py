@@ -19,11 +19,17 @@ import time
 from typing import Literal
 
 import numpy as np
-from pydantic import BaseModel, Field
 
 from holomj.errors import InputError
 from holomj.layout import geometry as geo
-from holomj.layout.hard_rules import HardChecks, hard_checks
+from holomj.layout.geometry import Pose
+from holomj.layout.hard_rules import hard_checks
+from holomj.layout.layout_result import (
+    ConstraintReport,
+    LayoutResult,
+    Placement,
+    UnplacedObject,
+)
 from holomj.layout.open_pockets import open_pockets, reachable_share
 from holomj.layout.room_problem import PreparedRoom, RoomProblem
 from holomj.layout.solver_cpsat import corridor_obstacles, solve_cpsat
@@ -32,59 +38,6 @@ from holomj.layout.solver_greedy import insert_unplaced, satisfied_weight, solve
 SOLVERS = ("cpsat", "greedy")
 GREEDY_SHARE = 0.3  # of the time limit, for the greedy warm start before CP-SAT
 SAFETY_FACTOR = 10.0  # deterministic runs: the wall clock stops a search only this far past it
-Pose = tuple[int, int, int]
-
-
-class Placement(BaseModel):
-    """Where an object goes: centre of its footprint (metres) and yaw (degrees, CCW)."""
-
-    x: float
-    y: float
-    yaw_deg: float
-    width: float = Field(description="Left-right size in metres.")
-    depth: float = Field(description="Front-back size in metres.")
-
-
-class ConstraintReport(BaseModel):
-    """One constraint and whether the final layout satisfies it."""
-
-    text: str
-    object: str
-    kind: str
-    target: str | None
-    weight: float
-    satisfied: bool
-    detail: str
-    source: str | None = None
-
-
-class UnplacedObject(BaseModel):
-    """An object the layout does not contain, and why."""
-
-    id: str
-    reason: str
-
-
-class LayoutResult(BaseModel):
-    """The answer for one room."""
-
-    room_id: str
-    placements: dict[str, Placement]
-    constraints: list[ConstraintReport]
-    satisfied: int
-    total: int
-    unplaced: list[UnplacedObject]
-    solve_time_s: float
-    solver_used: str
-    solver_status: str
-    hard_checks: HardChecks
-    warnings: list[str]
-    # the share of the free floor a robot reaches from the doors (holomj.layout.open_pockets)
-    reachable_share: float | None = None
-
-    def to_dict(self) -> dict:
-        """JSON-ready data."""
-        return self.model_dump(mode="json")
 
 
 def solve_room(

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from shapely.geometry import Polygon
 
-from holomj.spec.scene import Room, SceneObject
+from holomj.spec.scene import Door, Room, SceneObject, Window
 from holomj.spec.walls import Wall
 
 OPENING_MARGIN_M = 0.05  # frames stick out of the opening's span by about this
@@ -98,6 +98,21 @@ class PlacedBox:
     wall_id: str
     t0: float
     t1: float
+
+
+@dataclass(frozen=True)
+class WallSite:
+    """A room's wall faces and what stands at them: the scene's walls, doors and windows (other
+    rooms' among them), the floor furniture, the wall objects hung so far (hanging one more
+    appends it) and the wall height."""
+
+    faces: Sequence[WallFace]
+    walls: Sequence[Wall]
+    doors: Sequence[Door]
+    windows: Sequence[Window]
+    floor: Sequence[FloorItem]
+    placed: list[PlacedBox]
+    wall_height: float
 
 
 def room_faces(room: Room, walls: Sequence[Wall], wall_thickness: float) -> list[WallFace]:

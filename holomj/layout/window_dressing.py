@@ -46,16 +46,16 @@ from holomj.errors import SpecError
 from holomj.layout.wall_faces import (
     CEILING_GAP_M,
     OPENING_MARGIN_M,
-    FloorItem,
     PlacedBox,
     Unplaced,
     WallFace,
     WallPlacement,
+    WallSite,
     face_rect,
     fits_on,
     hits_placed,
 )
-from holomj.spec.scene import Door, Room, Window
+from holomj.spec.scene import Room, Window
 from holomj.spec.walls import Wall, find_wall_for_opening
 
 DRESSING_KINDS = frozenset({"curtains", "blinds"})
@@ -101,24 +101,15 @@ class _Fit:
 
 
 def dress_windows(
-    room: Room,
-    faces: Sequence[WallFace],
-    walls: Sequence[Wall],
-    doors: Sequence[Door],
-    windows: Sequence[Window],
-    floor: Sequence[FloorItem],
-    requests: Sequence[DressingRequest],
-    placed: list[PlacedBox],
-    *,
-    wall_height: float,
+    room: Room, site: WallSite, requests: Sequence[DressingRequest]
 ) -> tuple[list[WallPlacement], list[Unplaced]]:
     """Hang each curtain or blind at one window of ``room``; report the ones that find none.
 
-    ``faces`` are the room's wall faces, ``walls`` the scene's walls; ``doors`` and ``windows``
-    may hold openings of other rooms (only this room's windows are dressed). What is hung is
-    appended to ``placed`` so that later wall objects keep clear of it.
+    ``site``: the room's wall faces and what stands at them (only this room's windows are
+    dressed). What is hung is appended to ``site.placed`` so that later wall objects keep clear
+    of it.
     """
-    openings = _room_openings(room, faces, walls, windows)
+    openings = _room_openings(room, site.faces, site.walls, site.windows)
     result: list[WallPlacement] = []
     unplaced: list[Unplaced] = []
     dressed: set[str] = set()
@@ -141,12 +132,12 @@ def dress_windows(
             continue
         reasons = []
         for opening in free:
-            fit = _fit(req, opening, room, faces, walls, doors, windows, floor, placed, wall_height)
+            fit = _fit(req, opening, room, site)
             if isinstance(fit, str):
                 reasons.append(f"{opening.window.id}: {fit}")
                 continue
             dressed.add(opening.window.id)
-            result.append(_placement(req, opening, fit, room, placed))
+            result.append(_placement(req, opening, fit, room, site.placed))
             break
         else:
             unplaced.append(
@@ -180,46 +171,35 @@ def _room_openings(
     return out
 
 
-def _fit(
-    req: DressingRequest,
-    opening: _Opening,
-    room: Room,
-    faces: Sequence[WallFace],
-    walls: Sequence[Wall],
-    doors: Sequence[Door],
-    windows: Sequence[Window],
-    floor: Sequence[FloorItem],
-    placed: Sequence[PlacedBox],
-    wall_height: float,
-) -> _Fit | str:
+def _fit(req: DressingRequest, opening: _Opening, room: Room, site: WallSite) -> _Fit | str:
     """The size and height of ``req`` at ``opening``, or why it does not fit there."""
     window = opening.window
     top_of_window = window.base_height + window.height
-    ceiling = wall_height - CEILING_GAP_M
+    ceiling = site.wall_height - CEILING_GAP_M
     curtains = req.kind == "curtains"
     above, above_min = (ROD_ABOVE_M, ROD_ABOVE_MIN_M) if curtains else (BLIND_ABOVE_M, 0.0)
     top = min(top_of_window + above, ceiling)
     if top < top_of_window + above_min - 1e-9:
         return f"the window's top ({top_of_window:.2f} m) is too near the ceiling for {req.kind}"
     if curtains:
-        bottoms = [(FLOOR_GAP_M, None)]
-        for z, label in (
+        bottoms: list[tuple[float, str | None]] = [(FLOOR_GAP_M, None)]
+        for z, sill in (
             (window.base_height - OPENING_MARGIN_M, "sill length, under the window frame"),
             (window.base_height, "sill length"),
         ):
             if z > bottoms[-1][0] + 1e-9:
-                bottoms.append((z, label))
+                bottoms.append((z, sill))
         overhangs = _steps(CURTAIN_OVERHANG_M, MIN_OVERHANG_M)
     else:
         bottoms = [(max(window.base_height, FLOOR_GAP_M), None)]
         overhangs = [BLIND_OVERLAP_M, 0.0]
-    swings = _door_zones(room, faces, walls, doors)
+    swings = _door_zones(room, site)
     failures: list[str] = []  # what the narrowest dressing meets, at each bottom tried
     for z0, label in bottoms:
         widest: str | None = None  # what the widest one meets at this bottom
         for overhang in overhangs:
             width = window.width + 2 * overhang
-            why = _blocked(req, opening, width, z0, top, walls, windows, floor, placed, swings)
+            why = _blocked(req, opening, width, z0, top, site, swings)
             if why is None:
                 notes = []
                 if label is not None:
@@ -245,10 +225,7 @@ def _blocked(
     width: float,
     z0: float,
     z1: float,
-    walls: Sequence[Wall],
-    windows: Sequence[Window],
-    floor: Sequence[FloorItem],
-    placed: Sequence[PlacedBox],
+    site: WallSite,
     swings: Sequence[tuple[Polygon, float, str]],
 ) -> str | None:
     """What a dressing ``width`` wide from ``z0`` to ``z1`` at ``opening`` would meet, if
@@ -258,11 +235,11 @@ def _blocked(
         return f"the end of wall {face.wall.id}"
     depth = req.size[1]
     foot = face_rect(face, t, width, depth, STANDOFF_M)
-    for other in windows:
+    for other in site.windows:
         if other.id == opening.window.id:
             continue
         try:
-            wall, ot = find_wall_for_opening(walls, other.rooms, other.position, other.width)
+            wall, ot = find_wall_for_opening(site.walls, other.rooms, other.position, other.width)
         except SpecError:
             continue
         if wall.id != face.wall.id:
@@ -277,10 +254,10 @@ def _blocked(
     for zone, height, what in swings:
         if z0 < height and foot.intersects(zone) and foot.intersection(zone).area > 1e-9:
             return what
-    for item in floor:
+    for item in site.floor:
         if item.height > z0 + 1e-9 and item.footprint.distance(foot) < FURNITURE_GAP_M:
             return f"floor object {item.id}"
-    if hits_placed(foot, z0, z1, placed):
+    if hits_placed(foot, z0, z1, site.placed):
         return "another wall object"
     return None
 
@@ -289,20 +266,18 @@ def _overlap(a0: float, a1: float, b0: float, b1: float) -> bool:
     return a0 < b1 - 1e-9 and b0 < a1 - 1e-9
 
 
-def _door_zones(
-    room: Room, faces: Sequence[WallFace], walls: Sequence[Wall], doors: Sequence[Door]
-) -> list[tuple[Polygon, float, str]]:
+def _door_zones(room: Room, site: WallSite) -> list[tuple[Polygon, float, str]]:
     """For each door of the room: the floor in front of it on the room's side, as deep as the
     door is wide (where its leaves swing and people pass), with its height (none for an open
     doorway, which is as high as the wall)."""
-    by_wall = {f.wall.id: f for f in faces}
+    by_wall = {f.wall.id: f for f in site.faces}
     zones = []
-    for door in doors:
+    for door in site.doors:
         if room.id not in door.rooms:
             continue
         width = door.effective_width
         try:
-            wall, t = find_wall_for_opening(walls, door.rooms, door.position, width)
+            wall, t = find_wall_for_opening(site.walls, door.rooms, door.position, width)
         except SpecError:
             continue
         face = by_wall.get(wall.id)

@@ -6,8 +6,6 @@ can always stand in a box of the right size (via ``scale``) for an asset it cann
 
 from __future__ import annotations
 
-import functools
-import json
 import math
 from dataclasses import dataclass
 from importlib import resources
@@ -19,6 +17,7 @@ from holomj.file_names import LIBRARY_INDEX, LIBRARY_META
 from holomj.library.location import default_library_root
 from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.base import read_json, validate_model
+from holomj.spec.categories import category_aliases, normalise_category
 
 BUILTIN_BOX = "builtin:box"
 
@@ -117,7 +116,7 @@ class AssetLibrary:
         """The asset of ``category`` whose bounding box is closest in size (log-ratio distance).
 
         When the library has no asset of that exact category, the category's aliases
-        (``holomj/data/category_aliases.json``, e.g. ``HousePlant`` -> ``potted_plant``) are tried
+        (``holomj/data/category_facts.json``, e.g. ``HousePlant`` -> ``potted_plant``) are tried
         in order. A rotation by 90° about Z is allowed, so a 2 x 1 m bed matches a 1 x 2 m one.
         """
         for name in [category, *category_aliases().get(normalise_category(category), [])]:
@@ -125,19 +124,6 @@ class AssetLibrary:
             if candidates:
                 return min(candidates, key=lambda a: (size_distance(a.meta.size, size), a.meta.id))
         return None
-
-
-@functools.cache
-def category_aliases() -> dict[str, list[str]]:
-    """Normalised category name -> categories that may stand in for it, best first."""
-    text = _package_data("category_aliases.json").read_text(encoding="utf-8")
-    table = json.loads(text)
-    return {normalise_category(k): v for k, v in table.items() if not k.startswith("_")}
-
-
-def normalise_category(category: str) -> str:
-    """``Dining Table``, ``dining-table`` and ``DiningTable`` all become ``diningtable``."""
-    return "".join(ch for ch in category.lower() if ch.isalnum())
 
 
 def size_distance(a: tuple[float, float, float], b: tuple[float, float, float]) -> float:

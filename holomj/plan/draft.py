@@ -12,10 +12,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from holomj.plan.knowledge import KnowledgeBase, ObjectKind, RoomTemplate
+from holomj.plan.knowledge_schema import KnowledgeBase, ObjectKind, RoomTemplate
 from holomj.plan.prompt import ParsedPrompt
 from holomj.retrieval.text import TextEncoder
-from holomj.spec.plan import PlanRelation
+from holomj.spec.plan import PlanRelation, Variance
 
 MAX_QUANTITY = 40  # PlanObject's limit
 
@@ -28,7 +28,7 @@ class DraftSmall:
     name: str
     category: str
     quantity: int
-    variance: str = "varied"
+    variance: Variance = "varied"
     requested: bool = False
     instances: int | None = None
 
@@ -50,7 +50,7 @@ class DraftObject:
     kind: ObjectKind
     quantity: int
     priority: int = 5
-    variance: str = "same"
+    variance: Variance = "same"
     size: tuple[float, float, float] | None = None
     requested: bool = False
     per: str | None = None

@@ -186,7 +186,8 @@ def _drop_misfits(state: DraftPlan, room: DraftRoom) -> None:
             smaller = [s for s in (obj.kind.size, obj.kind.small) if _fits_room(s, room)]
             if smaller:
                 obj.size = smaller[0]
-                state.note(f"made the {obj.name} in {room.id} smaller to fit: {_dims(obj.size)}")
+                shown = _dims(obj.size) if obj.size is not None else "its kind's size"
+                state.note(f"made the {obj.name} in {room.id} smaller to fit: {shown}")
             else:
                 remove_object(room, obj)
     while True:

@@ -21,7 +21,7 @@ from holomj.plan.draft import (
     plural_name,
     remove_object,
 )
-from holomj.plan.knowledge import ObjectKind, TemplateObject
+from holomj.plan.knowledge_schema import ObjectKind, TemplateObject
 from holomj.plan.seating import seat_pairs
 
 

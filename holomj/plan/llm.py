@@ -23,12 +23,12 @@ from pydantic import ValidationError
 
 from holomj.errors import HolomjError, InputError
 from holomj.plan import llm_prompts as prompts
+from holomj.plan.arrangement_words import with_arrangement_words
 from holomj.plan.llm_client import ChatClient, LLMTransportError
 from holomj.plan.llm_config import LLMConfig
+from holomj.plan.llm_json import LLMResponseError, describe_validation
 from holomj.plan.llm_parse import (
     FloorPlanDraft,
-    LLMResponseError,
-    describe_validation,
     parse_constraints,
     parse_doors,
     parse_floor_plan,
@@ -257,7 +257,10 @@ def _converse(session: _Session, prompt: str, seed: int, categories: list[str]) 
     ]
     try:
         rooms = [
-            _plan_room(floor, room_id, doors.connections, windows, objects, constraints)
+            with_arrangement_words(
+                _plan_room(floor, room_id, doors.connections, windows, objects, constraints),
+                prompt,
+            )
             for room_id, objects, constraints in furnished
         ]
         return ScenePlan(

@@ -104,7 +104,12 @@ def load_llm_config(
                 where="--planner llm",
                 fix=f"set {' or '.join(env_names)}, or '{key}' in the [llm] table of {path}",
             )
-    return LLMConfig(**chosen, **values)
+    return LLMConfig(
+        base_url=str(chosen["base_url"]),
+        model=str(chosen["model"]),
+        api_key=chosen["api_key"],
+        **values,
+    )
 
 
 def check_base_url(url: str, where: str) -> str:

@@ -1,39 +1,34 @@
-"""Strict reading of the LLM's answers: one JSON object per answer, validated per step.
-
-:func:`extract_json_object` accepts exactly one JSON object, either as the whole answer or as the
-single fenced code block (```` ```json ````, or untagged) of an answer; anything else (prose
-without a block, two blocks, code in another language, NaN, a list) is an
-:class:`LLMResponseError` whose message is fed back to the model. Nothing in an answer is ever
-executed or evaluated: it is only ever given to :func:`json.loads`.
-
-Each step has a pydantic model of its answer (unknown fields rejected) and a ``parse_*``
-function that checks cross references (room ids) and maps the answer into plan data, clamping
-sizes to sane ranges and returning a note for every change it made.
+"""Each step of the LLM planner reads its answer here: a pydantic model of the answer
+(:mod:`holomj.plan.llm_answers`, unknown fields rejected) and a ``parse_*`` function that checks
+cross references (room ids) and maps the answer into plan data, clamping sizes to sane ranges
+and returning a note for every change it made. The JSON itself is extracted by
+:mod:`holomj.plan.llm_json`.
 """
 
 from __future__ import annotations
 
-import functools
-import json
-import math
 import re
 import unicodedata
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Annotated, Any, Literal, ParamSpec, TypeVar
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
-
-from holomj.errors import HolomjError
 from holomj.layout.constraints import constraints_to_text, parse_constraint_text
 from holomj.layout.floorplan import normal_type
-from holomj.spec.base import field_path
+from holomj.plan.llm_answers import (
+    ConstraintsAnswer,
+    DoorsAnswer,
+    FloorPlanAnswer,
+    ObjectAnswer,
+    ObjectsAnswer,
+    SmallObjectAnswer,
+    WallHeightAnswer,
+    WindowsAnswer,
+)
+from holomj.plan.llm_json import LLMResponseError, parse_answer, plan_errors
 from holomj.spec.plan import PlanObject, PlanSmallObject, PlanWindows
 
-MAX_ANSWER_CHARS = 200_000
 ROOM_SIDE_M = (2.5, 8.0)
 WALL_HEIGHT_M = (2.4, 4.5)
-MAX_ROOMS = 12
 MAX_OBJECTS_PER_ROOM = 40
 MAX_QUANTITY = 20
 MAX_ON_TOP = 10
@@ -45,229 +40,7 @@ SIZE_RANGE_CM: dict[str, tuple[tuple[float, float], ...]] = {
     "wall": ((5.0, 500.0), (1.0, 100.0), (2.0, 350.0)),
 }
 
-_THINK = re.compile(r"^\s*<think>.*?</think>", re.S)
-_FENCE = re.compile(r"```[ \t]*([A-Za-z0-9_+.-]*)[^\n]*\n(.*?)```", re.S)
 _INSTANCE_SUFFIX = re.compile(r"-\s*\d+$")
-
-T = TypeVar("T", bound=BaseModel)
-P = ParamSpec("P")
-Q = TypeVar("Q")
-
-
-class LLMResponseError(HolomjError):
-    """An answer of the model was not what the step asked for; the message says why."""
-
-
-# --------------------------------------------------------------------------- extraction
-
-
-def extract_json_object(content: str) -> dict[str, Any]:
-    """The one JSON object of an answer (bare, or in its single fenced block)."""
-    if not isinstance(content, str):
-        raise LLMResponseError("the answer is not text")
-    if len(content) > MAX_ANSWER_CHARS:
-        raise LLMResponseError(f"the answer is longer than {MAX_ANSWER_CHARS} characters")
-    text = _THINK.sub("", content, count=1).strip()
-    if not text:
-        raise LLMResponseError("the answer is empty; answer with one JSON object")
-    if "```" in text:
-        text = _fenced_block(text)
-    elif not text.startswith(("{", "[")):
-        raise LLMResponseError(
-            f"not JSON: the answer must be one JSON object, it starts with {text[:40]!r}"
-        )
-    data = _loads(text)
-    if not isinstance(data, dict):
-        raise LLMResponseError(f"expected one JSON object, got a JSON {type(data).__name__}")
-    return data
-
-
-def _fenced_block(text: str) -> str:
-    blocks = _FENCE.findall(text)
-    if not blocks:
-        raise LLMResponseError("a code block is not closed with ```; answer with one JSON object")
-    json_blocks = [body for lang, body in blocks if lang.lower() in ("", "json", "jsonc")]
-    if not json_blocks:
-        lang = blocks[0][0]
-        raise LLMResponseError(
-            f"not JSON: a {lang} code block is not an answer (code is never run); "
-            "answer with one JSON object"
-        )
-    if len(blocks) > 1:
-        raise LLMResponseError(
-            f"{len(blocks)} code blocks in the answer; answer with exactly one JSON object"
-        )
-    body = json_blocks[0].strip()
-    if not body.startswith(("{", "[")):
-        raise LLMResponseError(
-            f"not JSON: the code block must hold one JSON object, it starts with {body[:40]!r}"
-        )
-    return body
-
-
-def _loads(text: str) -> Any:
-    def reject_constant(name: str) -> Any:
-        raise ValueError(f"{name} is not a JSON number")
-
-    def finite_float(token: str) -> float:
-        value = float(token)
-        if not math.isfinite(value):
-            raise ValueError(f"number {token[:20]} is out of range")
-        return value
-
-    try:
-        return json.loads(text, parse_constant=reject_constant, parse_float=finite_float)
-    except json.JSONDecodeError as err:
-        raise LLMResponseError(
-            f"invalid JSON: {err.msg} at line {err.lineno} column {err.colno}"
-        ) from None
-    except (ValueError, RecursionError) as err:
-        raise LLMResponseError(f"invalid JSON: {err}") from None
-
-
-def _plan_errors(func: Callable[P, Q]) -> Callable[P, Q]:
-    """Report plan data that an answer made invalid as an :class:`LLMResponseError`."""
-
-    @functools.wraps(func)
-    def wrapper(*args: P.args, **kwargs: P.kwargs) -> Q:
-        try:
-            return func(*args, **kwargs)
-        except ValidationError as err:
-            raise LLMResponseError(
-                f"the answer makes invalid plan data: {describe_validation(err)}"
-            ) from None
-
-    return wrapper
-
-
-def parse_answer(content: str, model: type[T]) -> T:
-    """Extract the answer's JSON object and validate it as ``model``."""
-    data = extract_json_object(content)
-    try:
-        return model.model_validate(data)
-    except ValidationError as err:
-        raise LLMResponseError(f"wrong schema: {describe_validation(err)}") from None
-    except (ValueError, TypeError, RecursionError) as err:
-        raise LLMResponseError(f"wrong schema: {err}") from None
-
-
-def describe_validation(err: ValidationError, limit: int = 3) -> str:
-    """The first ``limit`` problems of a validation error, ``field.path: message`` each."""
-    problems = []
-    for item in err.errors(include_url=False)[:limit]:
-        message = "unknown field" if item.get("type") == "extra_forbidden" else item.get("msg")
-        problems.append(f"{field_path(tuple(item.get('loc', ())))}: {message}")
-    more = err.error_count() - len(problems)
-    return "; ".join(problems) + (f" (and {more} more)" if more > 0 else "")
-
-
-# --------------------------------------------------------------------------- answer models
-
-
-class _Answer(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, str_strip_whitespace=True)
-
-
-def _lower(value: Any) -> Any:
-    return value.strip().lower() if isinstance(value, str) else value
-
-
-Text = Annotated[str, Field(max_length=2000)]
-Short = Annotated[str, Field(min_length=1, max_length=200)]
-
-
-class RoomAnswer(_Answer):
-    """One room of the floor-plan answer."""
-
-    id: Short
-    type: Short
-    width_m: Annotated[float, Field(gt=0.0, le=100.0)]
-    depth_m: Annotated[float, Field(gt=0.0, le=100.0)]
-    floor_material: Short
-    wall_material: Short
-
-
-class FloorPlanAnswer(_Answer):
-    """Step 1: what kind of scene, and its rooms."""
-
-    scene_type: Short
-    style: list[Short] = Field(default_factory=list, max_length=10)
-    rooms: list[RoomAnswer] = Field(min_length=1, max_length=MAX_ROOMS)
-
-
-class WallHeightAnswer(_Answer):
-    """Step 2: one wall height for the whole scene."""
-
-    wall_height_m: Annotated[float, Field(gt=0.0, le=50.0)]
-
-
-class DoorsAnswer(_Answer):
-    """Step 3: which rooms are connected by a door, and where one enters."""
-
-    connections: list[tuple[Short, Short]] = Field(default_factory=list, max_length=60)
-    entrance_room: Short
-
-
-class WindowAnswer(_Answer):
-    """The windows of one room."""
-
-    room: Short
-    count: Annotated[int, Field(ge=0, le=12)]
-    kind: Literal["fixed", "hung", "slider"]
-
-    _kind_lower = field_validator("kind", mode="before")(_lower)
-
-
-class WindowsAnswer(_Answer):
-    """Step 4: windows per room (rooms left out get their type's defaults)."""
-
-    rooms: list[WindowAnswer] = Field(max_length=MAX_ROOMS)
-
-
-class SmallObjectAnswer(_Answer):
-    """An object standing on top of a receptacle."""
-
-    name: Short
-    description: Text = ""
-    quantity: Annotated[int, Field(ge=0, le=100)] = 1
-    variance: Literal["same", "varied"] = "varied"
-    category: Short | None = None
-
-    _variance_lower = field_validator("variance", mode="before")(_lower)
-
-
-class ObjectAnswer(_Answer):
-    """One floor or wall object of a room (the key of the answer's map is its name)."""
-
-    description: Text = ""
-    location: Literal["floor", "wall"]
-    size_cm: (
-        tuple[
-            Annotated[float, Field(gt=0.0, le=10_000.0)],
-            Annotated[float, Field(gt=0.0, le=10_000.0)],
-            Annotated[float, Field(gt=0.0, le=10_000.0)],
-        ]
-        | None
-    )
-    quantity: Annotated[int, Field(ge=0, le=100)] = 1
-    variance: Literal["same", "varied"] = "same"
-    category: Short | None = None
-    above: Short | None = None
-    objects_on_top: list[SmallObjectAnswer] = Field(default_factory=list, max_length=30)
-
-    _lower_words = field_validator("location", "variance", mode="before")(_lower)
-
-
-class ObjectsAnswer(_Answer):
-    """Step 5 (per room): the room's objects, keyed by name."""
-
-    objects: dict[Short, ObjectAnswer] = Field(max_length=80)
-
-
-class ConstraintsAnswer(_Answer):
-    """Step 6 (per room): layout constraint lines over instance names."""
-
-    constraints: list[Annotated[str, Field(max_length=1000)]] = Field(max_length=200)
 
 
 # --------------------------------------------------------------------------- names
@@ -305,7 +78,7 @@ def _clean_text(text: str, limit: int) -> str:
 
 def _room_ref(text: str, room_ids: Sequence[str], what: str) -> str:
     key = normalise_room_id(text)
-    if key in room_ids:
+    if key is not None and key in room_ids:
         return key
     raise LLMResponseError(f"{what}: unknown room {text!r} (rooms: {', '.join(room_ids)})")
 
@@ -346,7 +119,7 @@ class DoorsDraft:
     entrance_room: str
 
 
-@_plan_errors
+@plan_errors
 def parse_floor_plan(content: str) -> tuple[FloorPlanDraft, list[str]]:
     """Step 1: scene type, style and rooms (ids normalised, sides clamped to 2.5-8 m)."""
     answer = parse_answer(content, FloorPlanAnswer)
@@ -383,7 +156,7 @@ def parse_floor_plan(content: str) -> tuple[FloorPlanDraft, list[str]]:
     return FloorPlanDraft(scene_type, tuple(s for s in style if s), tuple(rooms)), notes
 
 
-@_plan_errors
+@plan_errors
 def parse_wall_height(content: str) -> tuple[float, list[str]]:
     """Step 2: the wall height in metres, clamped to a sane range."""
     answer = parse_answer(content, WallHeightAnswer)
@@ -398,7 +171,7 @@ def parse_wall_height(content: str) -> tuple[float, list[str]]:
     return clamped, notes
 
 
-@_plan_errors
+@plan_errors
 def parse_doors(content: str, room_ids: Sequence[str]) -> tuple[DoorsDraft, list[str]]:
     """Step 3: door connections between known rooms and the entrance room."""
     answer = parse_answer(content, DoorsAnswer)
@@ -422,7 +195,7 @@ def parse_doors(content: str, room_ids: Sequence[str]) -> tuple[DoorsDraft, list
     return DoorsDraft(tuple(pairs), entrance), notes
 
 
-@_plan_errors
+@plan_errors
 def parse_windows(
     content: str, room_ids: Sequence[str]
 ) -> tuple[dict[str, PlanWindows], list[str]]:
@@ -437,7 +210,7 @@ def parse_windows(
     return windows, []
 
 
-@_plan_errors
+@plan_errors
 def parse_objects(
     content: str,
     *,
@@ -488,7 +261,7 @@ def parse_objects(
     return objects, notes
 
 
-@_plan_errors
+@plan_errors
 def parse_constraints(
     content: str, *, room_id: str, instance_names: Sequence[str]
 ) -> tuple[list[str], list[str]]:
@@ -548,7 +321,8 @@ def _size_m(
         notes.append(
             f"{label}: size {shown} cm clamped to {' x '.join(f'{v:g}' for v in clamped)} cm"
         )
-    return tuple(round(v / 100.0, 3) for v in clamped)  # type: ignore[return-value]
+    width, depth, height = (round(v / 100.0, 3) for v in clamped)
+    return (width, depth, height)
 
 
 def _quantity(value: int, limit: int, notes: list[str], label: str) -> int:

@@ -26,7 +26,7 @@ import re
 import numpy as np
 
 from holomj.plan.draft import DraftPlan
-from holomj.plan.knowledge import ObjectKind
+from holomj.plan.knowledge_schema import ObjectKind
 from holomj.plan.prompt_relations import RELATIONS
 from holomj.plan.scene_match import OBJECT_MATCH_MIN, nearest_objects
 
@@ -140,12 +140,15 @@ def new_kind(state: DraftPlan, phrase: str, near: list[tuple[str, float]]) -> Ob
     if sizes:
         low, high = SIZE_BOUNDS[placement]
         median = np.median(np.asarray(sizes, dtype=float), axis=0)
-        size = tuple(float(round(min(max(v, lo), hi), 3)) for v, lo, hi in zip(median, low, high))
+        width, depth, height = (
+            float(round(min(max(v, lo), hi), 3)) for v, lo, hi in zip(median, low, high)
+        )
+        size = (width, depth, height)
     name = kind_name(phrase) or phrase
     return ObjectKind(
         category=re.sub(r"\s+", "_", name),
         placement=placement,
-        size=size,  # type: ignore[arg-type]
+        size=size,
         description=f"a {name}",
         many=2,
         variance="same",

@@ -22,7 +22,7 @@ from holomj.plan.draft import (
     spread,
 )
 from holomj.plan.furnish import draw_on_top
-from holomj.plan.knowledge import ObjectKind
+from holomj.plan.knowledge_schema import ObjectKind
 from holomj.plan.new_kinds import resolve_unknown
 from holomj.plan.prompt import ObjectRequest
 from holomj.plan.seating import is_seat_word, seat_for, seating_links, seating_table

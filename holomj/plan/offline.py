@@ -37,7 +37,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from holomj.errors import InputError
+from holomj.errors import InputError, SpecError
+from holomj.plan.arrangement_words import with_arrangement_words
 from holomj.plan.constraints_text import constraint_lines
 from holomj.plan.draft import MAX_QUANTITY, DraftObject, DraftPlan, DraftRoom
 from holomj.plan.fit import ESSENTIAL, fit_room
@@ -93,7 +94,7 @@ def plan_offline(prompt: str, seed: int, *, encoder: TextEncoder | None = None) 
     for room in state.rooms:
         fit_room(state, room)
     entrance = entrance_room(state, scene)
-    rooms = [_plan_room(state, room, styles) for room in state.rooms]
+    rooms = [with_arrangement_words(_plan_room(state, r, styles), prompt) for r in state.rooms]
     return ScenePlan(
         prompt=prompt,
         planner="offline",
@@ -159,14 +160,17 @@ def _plan_object(
         description += " with " + " and ".join(obj.parts)
     if styles:
         description += f" in {styles[0]} style"
+    placement = obj.kind.placement
+    if placement == "object":  # small kinds are planned on receptacles (on_top), never alone
+        raise SpecError(f"{obj.name!r} is a small object: it goes on a receptacle", where="plan")
     return PlanObject(
         name=obj.name,
         description=description[:500],
         category=obj.kind.category,
         size=obj.size,
         quantity=obj.quantity,
-        variance=obj.variance,  # type: ignore[arg-type]
-        placement=obj.kind.placement,  # type: ignore[arg-type]
+        variance=obj.variance,
+        placement=placement,
         above=obj.above,
         faced_by=obj.faced_by,
         on_top=[
@@ -175,7 +179,7 @@ def _plan_object(
                 description=state.object_kind(s.name).description,
                 category=s.category,
                 quantity=s.quantity,
-                variance=s.variance,  # type: ignore[arg-type]
+                variance=s.variance,
                 instances=s.instances,
             )
             for s in obj.on_top

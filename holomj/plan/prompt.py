@@ -31,7 +31,7 @@ from typing import Literal
 
 from pydantic import Field
 
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.prompt_clauses import (
     find_refinements,
     first_size_word,
@@ -47,7 +47,7 @@ from holomj.plan.prompt_materials import lone_materials, read_materials
 from holomj.plan.prompt_parts import part_after
 from holomj.plan.prompt_reader import Mention, Mods, Reader, match_phrases, read_modifiers
 from holomj.plan.prompt_relations import RelationRequest, read_relations
-from holomj.plan.prompt_sizes import read_sizes
+from holomj.plan.prompt_sizes import SizeRead, read_sizes
 from holomj.plan.prompt_words import (
     HEAD_END,
     MANY,
@@ -154,7 +154,7 @@ def parse_prompt(text: str, kb: KnowledgeBase) -> ParsedPrompt:
     scene = scene_mention(reader, head_end)
     found = _read_mentions(reader, scene, sizes)
     _attach_parts(reader, found)
-    scene_sizes = sizes.pop(-1, {})
+    scene_sizes = sizes.pop(-1, None)
     for start in sorted(sizes):  # sizes next to no room phrase: they describe the scene
         scene_sizes = scene_sizes or sizes[start]
     size_word = read_modifiers(reader, scene.start).size_word if scene is not None else None
@@ -166,8 +166,8 @@ def parse_prompt(text: str, kb: KnowledgeBase) -> ParsedPrompt:
         scene_keyword=reader.text(scene.start, scene.end) if scene is not None else None,
         refinements=find_refinements(reader),
         size_word=size_word or first_size_word(reader, head_end),
-        dims=scene_sizes.get("dims"),  # type: ignore[arg-type]
-        area_m2=scene_sizes.get("area_m2"),  # type: ignore[arg-type]
+        dims=scene_sizes.dims if scene_sizes is not None else None,
+        area_m2=scene_sizes.area_m2 if scene_sizes is not None else None,
         wall_height_m=reader.heights[0] if reader.heights else None,
         rooms=found.rooms,
         styles=found.styles,
@@ -198,9 +198,7 @@ class _Found:
     windows: int | None = None
 
 
-def _read_mentions(
-    reader: Reader, scene: Mention | None, sizes: dict[int, dict[str, object]]
-) -> _Found:
+def _read_mentions(reader: Reader, scene: Mention | None, sizes: dict[int, SizeRead]) -> _Found:
     """Rooms, objects, refused things, styles and windows, with their quantities."""
     found = _Found()
     neg_scopes = negation_scopes(reader.words)
@@ -232,6 +230,7 @@ def _read_mentions(
         refusal = mention.meaning("refused")
         style = mention.meaning("style")
         if room is not None:
+            room_size = sizes.pop(mention.start, SizeRead())
             found.rooms.append(
                 RoomMention(
                     template=room.key,
@@ -241,11 +240,12 @@ def _read_mentions(
                     zone=reader.words[mention.end - 1] in ZONE_WORDS,
                     location=located,
                     phrase=phrase,
-                    **sizes.pop(mention.start, {}),  # type: ignore[arg-type]
+                    dims=room_size.dims,
+                    area_m2=room_size.area_m2,
                 )
             )
             follows = reader.words[mention.end : mention.end + 2]
-            each_room = follows[:1] == ["each"] and follows[1:] and follows[1] in WITH_START
+            each_room = bool(follows[:1] == ["each"] and follows[1:] and follows[1] in WITH_START)
             starts_list = follows[:1] and follows[0] in WITH_START | {"where"}
             context = (
                 room.key if starts_list or each_room or _one_of_them(reader, mention) else None

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.prompt_words import plural_forms, tokenize
 
 
@@ -83,7 +83,9 @@ def _build_index(kb: KnowledgeBase) -> PhraseIndex:
     materials = {
         tuple(tokenize(alias)): key for key, term in kb.materials.items() for alias in term.aliases
     }
-    surfaces = {word: surface for surface, words in kb.surfaces.items() for word in words}
+    surfaces: dict[str, str] = {
+        word: surface for surface, words in kb.surfaces.items() for word in words
+    }
     refine: dict[str, list[str]] = {}
     for key, scene in kb.scene_types.items():
         for word in scene.refine_keywords:

@@ -36,7 +36,7 @@ def _material_run(reader: Reader, end: int) -> list[tuple[int, int, str | None]]
     parts: list[tuple[int, int, str | None]] = []
     k = end
     while k > 0 and len(parts) < ADJECTIVE_RUN:
-        hit = None
+        hit: tuple[int, int, str | None] | None = None
         for size in range(min(3, k), 0, -1):
             words = tuple(reader.words[k - size : k])
             if words in reader.index.materials:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.prompt_index import Meaning, PhraseIndex
 from holomj.plan.prompt_words import (
     ADJECTIVE_RUN,

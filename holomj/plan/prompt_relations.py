@@ -4,29 +4,24 @@ After an object phrase, the words up to the next list separator may say where it
 ``a desk under the window``, ``a floor lamp in the corner``, ``four chairs around it``,
 ``a nightstand on each side of the bed``, ``a mirror above the washbasin``, ``a coat rack by
 the door``, ``three salon chairs, each facing a mirror``. :func:`read_relations` finds them:
-filler words (``placed``, ``standing``, ``each``, ...) are skipped, the longest relation
-phrase of :data:`RELATIONS` is matched, then articles and up to two adjectives, then the
-target: an object phrase, ``it`` / ``them`` (the object named before the subject), or a place
-word (wall, corner, middle, window, door, entrance, ceiling). ``X with Y`` is read as X
-``holds`` Y (the planner decides: a small Y goes on X, a seat at it), ``side by side`` and ``in
-a row`` as ``in_row``. Relations the planner cannot use
-are still returned (the planner notes them); phrases it does not recognise are left alone.
+filler words (``placed``, ``standing``, ``each``, ...) are skipped, the longest relation phrase
+of :data:`RELATIONS` (the vocabulary's, :mod:`holomj.spec.relations`) is matched, then articles
+and up to two adjectives, then the target: an object phrase, ``it`` / ``them`` (the object named
+before the subject), or a place word (wall, corner, middle, window, door, entrance, ceiling).
+``X with Y`` is read as X ``holds`` Y (the planner decides: a small Y goes on X, a seat at it),
+``side by side`` and ``in a row`` as ``in_row``. Relations the planner cannot use are still
+returned (the planner notes them); phrases it does not recognise are left alone.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Literal
 
 from pydantic import Field
 
 from holomj.spec.base import FrozenModel
-from holomj.spec.plan import PlanRelationKind
-
-# The plan's relation kinds, and what only the prompt reader uses: an object under another,
-# "X with Y" (the planner decides what it means), facing a wall object.
-RelationKind = Literal[PlanRelationKind, "under", "holds"]
-TargetKind = Literal["object", "place"]
+from holomj.spec.relations import KIND_OF_WORDS, PHRASE_FAMILIES, PLACE_WORDS
+from holomj.spec.relations import ReadRelationKind as RelationKind
 
 # Words between an object phrase and its relation phrase that say nothing about where.
 FILLER = frozenset(
@@ -42,114 +37,10 @@ ARTICLES = frozenset(
 )
 ADJECTIVES_SKIPPED = 2
 PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those"})
-# Place words and what they make of the relation families that take them.
-PLACE_WORDS = {
-    "wall": "wall", "walls": "wall", "corner": "corner", "corners": "corner",
-    "middle": "middle", "center": "middle", "centre": "middle", "window": "window",
-    "windows": "window", "door": "door", "doors": "door", "entrance": "door",
-    "entry": "door", "doorway": "door", "ceiling": "ceiling",
-}  # fmt: skip
-
-# Relation phrases (longest first when matched) and the family each stands for. A family reads
-# as a relation kind by its target: see _KIND.
-RELATIONS: dict[tuple[str, ...], str] = {
-    ("in",): "in",
-    ("into",): "in",
-    ("at",): "at",
-    ("against",): "against",
-    ("along",): "against",
-    ("on",): "on",
-    ("on", "top", "of"): "on",
-    ("atop",): "on",
-    ("under",): "under",
-    ("below",): "under",
-    ("beneath",): "under",
-    ("underneath",): "under",
-    ("by",): "by",
-    ("next", "to"): "by",
-    ("beside",): "by",
-    ("besides",): "by",
-    ("alongside",): "by",
-    ("near",): "near",
-    ("close", "to"): "near",
-    ("nearby",): "near",
-    ("in", "front", "of"): "front",
-    ("behind",): "behind",
-    ("facing",): "facing",
-    ("face",): "facing",
-    ("faces",): "facing",
-    ("facing", "towards"): "facing",
-    ("facing", "toward"): "facing",
-    ("looking", "at"): "facing",
-    ("pointed", "at"): "facing",
-    ("turned", "towards"): "facing",
-    ("across", "from"): "across",
-    ("opposite",): "across",
-    ("opposite", "to"): "across",
-    ("opposite", "of"): "across",
-    ("around",): "around",
-    ("round",): "around",
-    ("surrounding",): "around",
-    ("on", "each", "side", "of"): "sides",
-    ("on", "either", "side", "of"): "sides",
-    ("on", "both", "sides", "of"): "sides",
-    ("at", "each", "side", "of"): "sides",
-    ("at", "either", "side", "of"): "sides",
-    ("on", "each", "side"): "sides_of_previous",
-    ("on", "either", "side"): "sides_of_previous",
-    ("flanking",): "sides",
-    ("above",): "above",
-    ("over",): "above",
-    ("from",): "from",
-    ("with",): "with",
-    ("side", "by", "side"): "row",
-    ("in", "a", "row"): "row",
-    ("in", "rows"): "row",
-    ("in", "2", "rows"): "row",
-    ("in", "a", "line"): "row",
-    ("next", "to", "each", "other"): "row",
-}
-# (family, target place or "object") -> relation kind
-_KIND: dict[tuple[str, str], str] = {
-    ("in", "corner"): "corner",
-    ("in", "middle"): "middle",
-    ("at", "middle"): "middle",
-    ("in", "front_of_window"): "by_window",
-    ("against", "wall"): "wall",
-    ("on", "wall"): "wall",
-    ("by", "wall"): "wall",
-    ("near", "wall"): "wall",
-    ("under", "window"): "under_window",
-    ("in_front", "window"): "by_window",
-    ("front", "window"): "by_window",
-    ("by", "window"): "by_window",
-    ("near", "window"): "by_window",
-    ("at", "window"): "by_window",
-    ("facing", "window"): "facing_window",
-    ("front", "door"): "by_door",
-    ("by", "door"): "by_door",
-    ("near", "door"): "by_door",
-    ("at", "door"): "by_door",
-    ("in", "door"): "by_door",
-    ("facing", "door"): "facing_door",
-    ("across", "door"): "facing_door",
-    ("from", "ceiling"): "ceiling",
-    ("row", "row"): "in_row",
-    ("on", "ceiling"): "ceiling",
-    ("by", "object"): "adjacent_to",
-    ("near", "object"): "near",
-    ("front", "object"): "in_front_of",
-    ("behind", "object"): "behind",
-    ("facing", "object"): "facing",
-    ("across", "object"): "across_from",
-    ("around", "object"): "around",
-    ("at", "object"): "around",
-    ("sides", "object"): "both_sides",
-    ("on", "object"): "on",
-    ("above", "object"): "above",
-    ("under", "object"): "under",
-    ("with", "object"): "holds",
-}
+# The relation phrases and place words (:data:`holomj.spec.relations.PHRASE_FAMILIES`,
+# :data:`~holomj.spec.relations.PLACE_WORDS`), and the kind each (family, target) reads as.
+RELATIONS = PHRASE_FAMILIES
+_KIND = KIND_OF_WORDS
 MAX_PHRASE = max(len(k) for k in RELATIONS)
 MAX_LEAD = 3  # filler words skipped before a relation phrase
 
@@ -211,7 +102,7 @@ def _relations_of(
         if place is not None:
             kind = _KIND.get((family, place))
             if kind is not None:
-                out.append(RelationRequest(subject=n, kind=kind, phrase=phrase))  # type: ignore[arg-type]
+                out.append(RelationRequest(subject=n, kind=kind, phrase=phrase))
             continue
         out.extend(_object_relation(n, family, target_at, phrase, words, objects, starts))
         break
@@ -234,7 +125,7 @@ def _object_relation(
     kind = _KIND.get((family, "object"))
     if kind is None or target is None or target == n:
         return []
-    return [RelationRequest(subject=n, kind=kind, target=target, phrase=phrase)]  # type: ignore[arg-type]
+    return [RelationRequest(subject=n, kind=kind, target=target, phrase=phrase)]
 
 
 def _relation_after(

@@ -9,6 +9,7 @@ not planned.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 from holomj.plan.prompt_reader import Reader, longest_at
 from holomj.plan.prompt_words import MAX_PHRASE_WORDS, SEPARATORS, is_number
@@ -26,14 +27,33 @@ _CEILING = {"ceiling", "ceilings"}
 _HEIGHT_WORDS = {"tall", "high", "height"}
 
 
-def read_sizes(reader: Reader) -> dict[int, dict[str, object]]:
+@dataclass(frozen=True)
+class SizeRead:
+    """A room's (or the scene's) size as the prompt gives it: dimensions (metres) or an area."""
+
+    dims: tuple[float, float] | None = None
+    area_m2: float | None = None
+
+
+@dataclass(frozen=True)
+class _Found:
+    """A size in the words: a room size, a wall height, or an object's height (``tall``);
+    ``side``: one length read as a square."""
+
+    size: SizeRead = SizeRead()
+    height: float | None = None
+    side: bool = False
+    tall: bool = False
+
+
+def read_sizes(reader: Reader) -> dict[int, SizeRead]:
     """Room dimensions and areas, keyed by the start of the room phrase they describe.
 
     Key -1: no room phrase close by (the scene's size). Lengths next to ``ceiling`` become the
     wall height (``reader.heights``); sizes of single objects are ignored, with a note.
     """
     words = reader.words
-    out: dict[int, dict[str, object]] = {}
+    out: dict[int, SizeRead] = {}
     i = 0
     while i < len(words):
         found = _size_at(words, i)
@@ -44,9 +64,9 @@ def read_sizes(reader: Reader) -> dict[int, dict[str, object]]:
         for k in range(i, end):
             reader.used[k] = True
         text = reader.text(i, end)
-        if "height" in value:
-            reader.heights.append(float(value["height"]))  # type: ignore[arg-type]
-        elif value.pop("tall", False):
+        if value.height is not None:
+            reader.heights.append(value.height)
+        elif value.tall:
             reader.notes.append(f"'{text}' describes an object's height, which is not planned")
         else:
             target = _nearest_room_word(reader, i, end)
@@ -55,16 +75,16 @@ def read_sizes(reader: Reader) -> dict[int, dict[str, object]]:
                     f"'{text}' is an object size; objects keep the knowledge base's sizes"
                 )
             else:
-                if value.pop("side", False):
-                    side = value["dims"][0]  # type: ignore[index]
+                if value.side and value.size.dims is not None:
+                    side = value.size.dims[0]
                     reader.notes.append(f"read '{text}' as a square room of {side:g} x {side:g} m")
-                out.setdefault(target, value)
+                out.setdefault(target, value.size)
         i = end
     return out
 
 
-def _size_at(words: Sequence[str], i: int) -> tuple[int, dict[str, object]] | None:
-    """A size starting at ``words[i]``: (end, {dims | area_m2 | height | side | tall})."""
+def _size_at(words: Sequence[str], i: int) -> tuple[int, _Found] | None:
+    """A size starting at ``words[i]``: (end, what it is)."""
     if not is_number(words[i]):
         return None
     value = float(words[i])
@@ -73,7 +93,7 @@ def _size_at(words: Sequence[str], i: int) -> tuple[int, dict[str, object]] | No
     if unit is not None:
         j += 1
     if j < len(words) and words[j] in _AREA_WORDS:
-        return j + 1, {"area_m2": value * _AREA_WORDS[words[j]]}
+        return j + 1, _Found(SizeRead(area_m2=value * _AREA_WORDS[words[j]]))
     if j + 1 < len(words) and words[j] in _BY and is_number(words[j + 1]):
         other = float(words[j + 1])
         k = j + 2
@@ -81,14 +101,14 @@ def _size_at(words: Sequence[str], i: int) -> tuple[int, dict[str, object]] | No
         if unit2 is not None:
             k += 1
         scale = unit or unit2 or 1.0
-        return k, {"dims": (value * (unit or scale), other * (unit2 or scale))}
+        return k, _Found(SizeRead(dims=(value * (unit or scale), other * (unit2 or scale))))
     if unit is None:
         return None
     if _CEILING & set(words[max(0, i - 3) : j + 3]):
-        return j, {"height": value * unit}
+        return j, _Found(height=value * unit)
     if j < len(words) and words[j] in _HEIGHT_WORDS:
-        return j + 1, {"tall": True}
-    return j, {"dims": (value * unit, value * unit), "side": True}
+        return j + 1, _Found(tall=True)
+    return j, _Found(SizeRead(dims=(value * unit, value * unit)), side=True)
 
 
 def _nearest_room_word(reader: Reader, start: int, end: int) -> int | None:
@@ -112,7 +132,8 @@ def _nearest_room_word(reader: Reader, start: int, end: int) -> int | None:
             break
         for begin in range(max(0, k - MAX_PHRASE_WORDS + 1), k + 1):
             hit = longest_at(reader, begin)
-            ends_here = hit is not None and begin + len(hit[0]) == k + 1
-            if ends_here and {m.kind for m in hit[1]} & {"scene", "room"}:  # type: ignore[index]
+            if hit is None or begin + len(hit[0]) != k + 1:
+                continue
+            if {m.kind for m in hit[1]} & {"scene", "room"}:
                 return begin
     return -1

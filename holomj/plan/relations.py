@@ -37,16 +37,8 @@ from holomj.plan.draft import (
 )
 from holomj.plan.prompt_relations import RelationRequest
 from holomj.spec.plan import PlanRelation
+from holomj.spec.relations import LAYOUT_KINDS  # the kinds that go to the layout as they are
 
-# Relation kinds that go to the layout as they are.
-LAYOUT_KINDS = frozenset(
-    {
-        "corner", "wall", "middle", "under_window", "by_window", "by_door", "facing_window",
-        "facing_door", "adjacent_to",
-        "near", "in_front_of", "behind", "facing", "across_from", "around", "both_sides",
-        "in_row",
-    }
-)  # fmt: skip
 SEAT_CATEGORIES = frozenset(
     {
         "dining_chair", "office_chair", "stool", "armchair", "chair", "bar_stool",
@@ -142,7 +134,7 @@ def _place_relation(
         state.note(f"'{_asked(state, rel)}': the {name} hangs on a wall; left to the defaults")
         return
     if rel.kind in LAYOUT_KINDS:
-        _add(room, PlanRelation(subject=name, kind=rel.kind, phrase=rel.phrase))  # type: ignore[arg-type]
+        _add(room, PlanRelation(subject=name, kind=rel.kind, phrase=rel.phrase))
 
 
 def _object_relation(
@@ -208,7 +200,7 @@ def _object_relation(
             state.note(f"'{name} {phrase}': {want} {name}s, one on each side of each {target}")
             obj.quantity = want
     if kind in LAYOUT_KINDS:
-        _add(room, PlanRelation(subject=name, kind=kind, target=target, phrase=phrase))  # type: ignore[arg-type]
+        _add(room, PlanRelation(subject=name, kind=kind, target=target, phrase=phrase))
 
 
 def _stands_on(kind: str, small: bool, obj: DraftObject | None, other: DraftObject | None) -> bool:

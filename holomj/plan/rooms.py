@@ -10,7 +10,7 @@ explicit requests, style words or the templates' lists.
 from __future__ import annotations
 
 from holomj.plan.draft import DraftPlan, DraftRoom
-from holomj.plan.knowledge import RoomTemplate, SceneType
+from holomj.plan.knowledge_schema import RoomTemplate, SceneType
 from holomj.plan.prompt import RoomMention
 
 WALL_HEIGHT_LIMITS = (2.4, 4.0)
@@ -29,8 +29,8 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
         counts[entry.id] = drawn if keep else 0
     if state.only_room is not None:  # one room asked for, alone
         counts = {e.id: int(e.template == state.only_room) for e in scene.rooms}
-        first = [e.id for e in scene.rooms if counts[e.id]]
-        counts = {k: int(k == first[0]) for k in counts} if first else counts
+        alone = [e.id for e in scene.rooms if counts[e.id]]
+        counts = {k: int(k == alone[0]) for k in counts} if alone else counts
     if scene.kind == "commercial" and state.only_room is None:
         _main_room_alone(state, scene, counts)
     single = len(scene.rooms) == 1 or state.only_room is not None
@@ -42,8 +42,8 @@ def make_rooms(state: DraftPlan, scene: SceneType) -> None:
     if listed:
         named = {m.template for m in mentions}
         for entry in scene.rooms:
-            template = kb.rooms[entry.template]
-            if entry.template not in named and template.counts_as not in named:
+            counts_as = kb.rooms[entry.template].counts_as
+            if entry.template not in named and counts_as not in named:
                 counts[entry.id] = entry.count[0] if entry.probability >= 1.0 else 0
     extra: dict[str, int] = {}  # template -> count, for rooms the scene type does not have
     for mention in mentions:
@@ -182,7 +182,9 @@ def _build_rooms(
             state.rooms.append(DraftRoom(room_id, entry.template, template, entry_id=entry.id))
     entries = {entry.id: entry for entry in scene.rooms}
     for room in state.rooms:
-        wishes = [first_id[a] for a in entries[room.entry_id].adjacent_to if a in first_id]  # type: ignore[index]
+        if room.entry_id is None:  # every room so far is of a scene type's entry
+            continue
+        wishes = [first_id[a] for a in entries[room.entry_id].adjacent_to if a in first_id]
         room.adjacent_to = [w for w in dict.fromkeys(wishes) if w != room.id]
     for template_id, n in extra.items():
         for _ in range(n):
@@ -216,10 +218,10 @@ def size_rooms(state: DraftPlan) -> None:
     """Areas from the templates (jittered, scaled by size words) or the prompt's sizes."""
     parsed, limits, rng = state.parsed, state.kb.limits, state.rng
     mentions = {}
-    for mention in parsed.rooms:
-        room = next((r for r in state.rooms if r.template_id == mention.template), None)
+    for asked in parsed.rooms:
+        room = next((r for r in state.rooms if r.template_id == asked.template), None)
         if room is not None and room.id not in mentions:
-            mentions[room.id] = mention
+            mentions[room.id] = asked
     for room in state.rooms:
         lo, hi = room.template.area
         room.area = float(rng.uniform(lo, hi))
@@ -252,7 +254,12 @@ def _scene_size(state: DraftPlan, dims: tuple[float, float] | None, area: float 
         return
     if not free:
         return
-    total = area if area is not None else dims[0] * dims[1]  # type: ignore[index]
+    if area is not None:
+        total = area
+    elif dims is not None:
+        total = dims[0] * dims[1]
+    else:
+        return
     fixed = sum(r.floor_area for r in state.rooms if r.fixed)
     share = sum(r.area for r in free)
     for room in free:
@@ -323,8 +330,9 @@ def choose_wall_height(state: DraftPlan, scene: SceneType) -> float:
         return round(height, 2)
     span = scene.wall_height
     for style in parsed.styles:
-        if state.kb.styles[style].wall_height is not None:
-            span = state.kb.styles[style].wall_height  # type: ignore[assignment]
+        style_span = state.kb.styles[style].wall_height
+        if style_span is not None:
+            span = style_span
             break
     return round(round(float(rng.uniform(span[0], span[1])) / 0.05) * 0.05, 2)
 

@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from types import MappingProxyType
 
 from holomj.layout.constraints import parse_constraint_text
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.prompt import ObjectRequest
 from holomj.plan.prompt_relations import RelationRequest
 

@@ -35,7 +35,7 @@ from collections.abc import Mapping
 from holomj.layout.counter_runs import RUN_CATEGORIES
 from holomj.layout.desk_grid import is_grid_kind
 from holomj.plan.draft import DraftObject, DraftRoom
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.seating import seat_pairs
 
 SEAT_ZONE_M = 0.7  # a seat's depth and the room to pull it out

@@ -36,7 +36,7 @@ import re
 from typing import Any
 
 from holomj.evaluation.plan_spec import RELATION_MAP
-from holomj.refinement.instruction import Instruction, Item
+from holomj.refinement.instruction_items import Instruction, Item
 from holomj.refinement.summary import SceneSummary
 
 TOLERANCE = 1e-9
@@ -99,6 +99,7 @@ def instruction_spec(instruction: Instruction, before: SceneSummary) -> dict[str
             if mapped is None:
                 continue
             relation, place = mapped
+            obj_name: str | None
             if place is None:
                 if target is None:
                     continue
@@ -182,7 +183,9 @@ def adjust_plan_spec(
 
 def _stem_names(entry: dict[str, Any], item: Item) -> bool:
     stem = entry.get("id_stem")
-    return bool(stem) and any(re.fullmatch(re.escape(stem) + r"_\d+", t) for t in item.targets)
+    if not stem:
+        return False
+    return any(re.fullmatch(re.escape(stem) + r"_\d+", t) for t in item.targets)
 
 
 def instruction_checks(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:

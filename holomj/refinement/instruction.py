@@ -29,141 +29,24 @@ What cannot be used (an unknown room, a relation to nothing in the scene) is kep
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
-from typing import Literal
 
 from holomj.evaluation.vocabulary import Vocabulary
-from holomj.plan.knowledge import KnowledgeBase, knowledge_base
+from holomj.plan.knowledge import knowledge_base
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.new_kinds import kind_name
 from holomj.plan.prompt import ObjectRequest, ParsedPrompt, parse_prompt
+from holomj.refinement.clauses import TO_PLACE, clause_verb, split_clauses
+from holomj.refinement.instruction_items import Instruction, Item
 from holomj.refinement.summary import ObjectInfo, RoomInfo, SceneSummary
+from holomj.spec.relations import EDIT_KIND_OF, EDIT_PLACE_KINDS, kinds_about
 
-Action = Literal["add", "add_on", "remove", "move"]
 MAX_QUANTITY = 6
 PLURAL_QUANTITY = 2
 
-REMOVE_VERBS = ("remove", "delete", "take away", "take out", "get rid of", "discard", "drop")
-MOVE_VERBS = ("move", "shift", "push", "relocate", "rearrange", "slide")
-PUT_VERBS = ("put", "place", "set", "position", "stand")
-ADD_VERBS = ("add", "include", "insert", "bring", "make", "create", "give", "furnish")
-VERBS = REMOVE_VERBS + MOVE_VERBS + PUT_VERBS + ADD_VERBS
 ZONE_WORDS = ("corner", "nook", "area", "zone", "spot", "space", "station", "set up", "setup")
-# Edit relation kinds (holomj.spec.edit) of the parser's relation kinds.
-EDIT_KINDS = {
-    "corner": "corner",
-    "wall": "wall",
-    "middle": "middle",
-    "under_window": "under_window",
-    "by_window": "by_window",
-    "by_door": "by_door",
-    "facing_window": "facing_window",
-    "facing_door": "facing_door",
-    "adjacent_to": "adjacent_to",
-    "both_sides": "adjacent_to",
-    "near": "near",
-    "in_front_of": "in_front_of",
-    "behind": "behind",
-    "facing": "facing",
-    "across_from": "across_from",
-    "around": "around",
-    "above": "above",
-}
-PLACE_KINDS = frozenset(
-    {
-        "corner",
-        "wall",
-        "middle",
-        "under_window",
-        "by_window",
-        "by_door",
-        "facing_window",
-        "facing_door",
-    }
-)
-_TO_PLACE = (
-    (r"\b(?:in)?to the (?:middle|center|centre)\b", "in the middle"),
-    (r"\b(?:in)?to (?:a|the) corner\b", "in the corner"),
-    (r"\bto the window\b", "by the window"),
-    (r"\bto the wall\b", "against the wall"),
-    (r"\bto the (?:door|entrance)\b", "by the door"),
-)
-
-
-@dataclass
-class Item:
-    """One thing the instruction asks for.
-
-    ``relations``: (edit relation kind, target) with target None (a place), ``"item:<key>"``
-    (another item of the instruction) or a scene object id. ``targets``: the scene objects a
-    ``remove`` or ``move`` is about. ``on``: the receptacle of an ``add_on``."""
-
-    key: str
-    action: Action
-    kind: str
-    description: str
-    category: str | None
-    categories: tuple[str, ...]
-    placement: str
-    quantity: int
-    room: str | None
-    relations: list[tuple[str, str | None]] = field(default_factory=list)
-    targets: list[str] = field(default_factory=list)
-    on: str | None = None
-    phrase: str = ""
-    clause: int = 0
-
-    @property
-    def slug(self) -> str:
-        """``floor lamp`` -> ``floor_lamp``."""
-        return re.sub(r"[^a-z0-9]+", "_", self.kind.lower()).strip("_") or "object"
-
-    @property
-    def stem(self) -> str:
-        """The id stem of the objects refine adds for it: ``living_room.refine.armchair``."""
-        return f"{self.room or 'scene'}.refine.{self.key}"
-
-    def to_json(self) -> dict[str, object]:
-        """JSON-able form (for refine.json)."""
-        return {
-            "key": self.key,
-            "action": self.action,
-            "kind": self.kind,
-            "description": self.description,
-            "category": self.category,
-            "placement": self.placement,
-            "quantity": self.quantity,
-            "room": self.room,
-            "relations": [list(r) for r in self.relations],
-            "targets": list(self.targets),
-            "on": self.on,
-            "phrase": self.phrase,
-        }
-
-
-@dataclass
-class Instruction:
-    """The items an instruction asks for, and what could not be used."""
-
-    text: str
-    items: list[Item]
-    notes: list[str] = field(default_factory=list)
-
-    def item(self, key: str) -> Item | None:
-        """The item ``key``."""
-        return next((i for i in self.items if i.key == key), None)
-
-    @property
-    def rooms(self) -> list[str]:
-        """The rooms the items are in (in order, once)."""
-        return list(dict.fromkeys(i.room for i in self.items if i.room))
-
-    def to_json(self) -> dict[str, object]:
-        """JSON-able form (for refine.json)."""
-        return {
-            "text": self.text,
-            "items": [i.to_json() for i in self.items],
-            "notes": list(self.notes),
-        }
+# Edit relation kinds (holomj.spec.edit) of the parser's relation kinds; the places among them.
+EDIT_KINDS = EDIT_KIND_OF
+PLACE_KINDS = frozenset(EDIT_PLACE_KINDS)
 
 
 def read_instruction(
@@ -180,41 +63,13 @@ def read_instruction(
     result = Instruction(text=" ".join(text.split()), items=[])
     keys: dict[str, int] = {}
     for number, clause in enumerate(split_clauses(text)):
-        action, body = _verb(clause)
-        for pattern, place in _TO_PLACE:
+        action, body = clause_verb(clause)
+        for pattern, place in TO_PLACE:
             body = re.sub(pattern, place, body)
         _Clause(number, action, body, scene, kb, vocab, result, keys).read()
     if not result.items:
         result.notes.append("the instruction names nothing to add, remove or move")
     return result
-
-
-def split_clauses(text: str) -> list[str]:
-    """The clauses of an instruction (see the module docstring)."""
-    lowered = " ".join(text.lower().split())
-    verbs = "|".join(re.escape(v) for v in VERBS)
-    parts = re.split(rf"\bthen\b|[;.!?]|(?:,|\band\b)\s*(?=(?:please\s+)?(?:{verbs})\b)", lowered)
-    out = []
-    for part in parts:
-        part = re.sub(r"^\s*(?:and|also|then|please|,)\s+", "", part.strip(" ,")).strip()
-        if part:
-            out.append(part)
-    return out
-
-
-def _verb(clause: str) -> tuple[str, str]:
-    """(``add``/``remove``/``move``/``put``, the clause) from the clause's first verb."""
-    words = re.sub(r"^(?:please|now|also|and)\s+", "", clause)
-    for verbs, action in (
-        (REMOVE_VERBS, "remove"),
-        (MOVE_VERBS, "move"),
-        (PUT_VERBS, "put"),
-        (ADD_VERBS, "add"),
-    ):
-        for verb in verbs:
-            if re.match(rf"{re.escape(verb)}\b", words):
-                return action, words
-    return "add", words
 
 
 class _Clause:
@@ -485,7 +340,7 @@ class _Clause:
             if target is None:
                 continue
             if target.startswith("item:"):
-                other = self.result.item(target[5:]) or _find(self.result, target[5:])
+                other = self.result.item(target[5:])
                 if other is not None and other.room:
                     return other.room
                 continue
@@ -494,9 +349,9 @@ class _Clause:
                 return obj.room
         rooms = list(self.scene.rooms)
         kinds = {r[0] for r in item.relations}
-        if kinds & {"by_window", "under_window", "facing_window"}:
+        if kinds & kinds_about("window"):
             rooms = [r for r in rooms if r.windows] or rooms
-        if kinds & {"by_door", "facing_door"}:
+        if kinds & kinds_about("door"):
             rooms = [r for r in rooms if r.doors] or rooms
         belongs = set()
         if item.kind in self.kb.objects:
@@ -508,10 +363,6 @@ class _Clause:
         if not rooms:
             return None
         return max(rooms, key=lambda r: (r.type in belongs, r.area)).id
-
-
-def _find(result: Instruction, key: str) -> Item | None:
-    return next((i for i in result.items if i.key == key), None)
 
 
 def _words(name: str) -> str:

@@ -36,8 +36,8 @@ from typing import Any, TypeVar
 from holomj.errors import HolomjError
 from holomj.plan.llm_client import ChatClient, LLMTransportError
 from holomj.plan.llm_config import LLMConfig
-from holomj.plan.llm_parse import LLMResponseError
-from holomj.refinement.instruction import Instruction
+from holomj.plan.llm_json import LLMResponseError
+from holomj.refinement.instruction_items import Instruction
 from holomj.refinement.safety import (
     MAX_OPS_PER_ROUND,
     Checked,
@@ -124,19 +124,9 @@ class VisionChat:
             parts.append({"type": "image_url", "image_url": {"url": data_url(png)}})
         return {"role": "user", "content": parts}
 
-    def ask(
-        self,
-        step: str,
-        text: str,
-        views: Sequence[tuple[str, bytes]],
-        parse: Callable[[str], R],
-        *,
-        system: str = SYSTEM,
-    ) -> tuple[R, dict[str, Any]]:
-        """Ask ``text`` (with ``views``: (caption, PNG)) until ``parse`` accepts an answer;
-        (the parsed answer, the step's record). :class:`LLMStepFailed` when the attempts run
-        out or the server cannot be used."""
-        record: dict[str, Any] = {
+    def _new_record(self, step: str) -> dict[str, Any]:
+        """A step's record before its first call (calls, tokens, images, seconds, errors)."""
+        return {
             "step": step,
             "model": self.config.model,
             "calls": 0,
@@ -149,6 +139,20 @@ class VisionChat:
             "text_only": not self.images,
             "errors": [],
         }
+
+    def ask(
+        self,
+        step: str,
+        text: str,
+        views: Sequence[tuple[str, bytes]],
+        parse: Callable[[str], R],
+        *,
+        system: str = SYSTEM,
+    ) -> tuple[R, dict[str, Any]]:
+        """Ask ``text`` (with ``views``: (caption, PNG)) until ``parse`` accepts an answer;
+        (the parsed answer, the step's record). :class:`LLMStepFailed` when the attempts run
+        out or the server cannot be used."""
+        record = self._new_record(step)
         history: list[dict[str, Any]] = []
         attempts = 1 + self.config.max_retries
         image_retry = True

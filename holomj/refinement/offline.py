@@ -26,7 +26,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
-from holomj.refinement.instruction import Instruction, Item
+from holomj.refinement.finding import Finding
+from holomj.refinement.instruction_items import Instruction, Item
 from holomj.refinement.safety import MAX_OPS_PER_ROUND, next_id
 from holomj.refinement.summary import SceneSummary
 
@@ -51,7 +52,7 @@ def propose(
     instruction: Instruction,
     scene: SceneSummary,
     checks: list[dict[str, Any]],
-    findings: Iterable[dict[str, Any]] = (),
+    findings: Iterable[Finding] = (),
     tried: set[str] | None = None,
     *,
     max_ops: int = MAX_OPS_PER_ROUND,
@@ -80,7 +81,7 @@ class _Planner:
         self.out = Proposal()
         self.moving: set[str] = set()
 
-    def run(self, findings: list[dict[str, Any]]) -> Proposal:
+    def run(self, findings: list[Finding]) -> Proposal:
         for item in self.instruction.items:
             if item.action == "add":
                 self._add(item)
@@ -207,9 +208,8 @@ class _Planner:
 
     # -- what the evaluation finds
 
-    def _fix(self, finding: dict[str, Any]) -> None:
-        object_id = finding.get("object")
-        obj = self.scene.object(object_id or "")
+    def _fix(self, finding: Finding) -> None:
+        obj = self.scene.object(finding.object)
         if obj is None or obj.static or obj.placement != "floor" or obj.id in self.moving:
             return
         relations = [{"kind": "wall"}]
@@ -217,5 +217,5 @@ class _Planner:
             if item.action == "add" and obj.id in self._mine(item):
                 relations = self._relations_of(item) or relations
         op = {"op": "move", "id": obj.id, "relations": relations}
-        if self._emit(op, f"{finding.get('metric')}: {finding.get('reason')} (move {obj.id} away)"):
+        if self._emit(op, f"{finding.metric}: {finding.reason} (move {obj.id} away)"):
             self.moving.add(obj.id)

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 from shapely.geometry import Point
 
-from holomj.plan.llm_parse import LLMResponseError, extract_json_object
+from holomj.plan.llm_json import LLMResponseError, extract_json_object
 from holomj.refinement.safety import looks_like_code
 
 MAX_NAME_CHARS = 80
@@ -185,12 +185,11 @@ def parse_pixel(content: str, width: int, height: int) -> tuple[int, int]:
     """The pixel of an answer ``{"pixel": [u, v]}``, inside the image."""
     data = extract_json_object(content)
     pixel = data.get("pixel")
-    ok = (
-        isinstance(pixel, list)
-        and len(pixel) == 2
-        and all(isinstance(p, (int, float)) and not isinstance(p, bool) for p in pixel)
-    )
-    if not ok:
+    if (
+        not isinstance(pixel, list)
+        or len(pixel) != 2
+        or not all(isinstance(p, (int, float)) and not isinstance(p, bool) for p in pixel)
+    ):
         raise LLMResponseError('expected {"pixel": [u, v]} with two numbers')
     u, v = (float(p) for p in pixel)
     if not (math.isfinite(u) and math.isfinite(v)):

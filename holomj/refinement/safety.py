@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from holomj.errors import HolomjError
-from holomj.plan.llm_parse import LLMResponseError, extract_json_object
+from holomj.plan.llm_json import LLMResponseError, extract_json_object
 from holomj.refinement.summary import SceneSummary
 from holomj.spec.edit import MAX_OPERATIONS, parse_operations
 

@@ -1,28 +1,5 @@
-"""Choosing library assets for plan objects: Holodeck's score M = α·V + β·T − γ·S.
-
-- **V** (visual): CLIP cosine between ``"a 3D model of <description>"`` and the asset's
-  thumbnails, the best view counting (:mod:`holomj.retrieval.visual`). Left out, with a note,
-  when no CLIP weights are configured or no candidate has thumbnails: T then carries V's
-  weight too (M = (α + β)·T − γ·S), because both measure how well the asset fits the
-  description and Holodeck's balance of relevance against size rests on α. Taken literally,
-  β·T − γ·S lets the size term decide the category: on the labelled set of the tests, top-1
-  category accuracy drops from 0.91 to 0.72. A candidate without thumbnails among others that
-  have them gets the median V of those (neutral).
-- **T** (text): sentence-embedding cosine between the description and the asset's text,
-  ``"<category words>: <asset description>"``.
-- **S** (size, metres): the mean absolute difference between the requested and the asset's
-  extents, height against height and the footprint under the better of the two quarter turns
-  (a 2 x 1 m bed matches a 1 x 2 m request), each difference capped at
-  :data:`SIZE_CAP_M` so one absurd extent cannot swamp the other terms. 0 without a size.
-
-Defaults α = 100, β = 1, γ = 10 as in Holodeck. Candidates are the assets whose placement
-flags include the requested placement (``builtin:box`` never competes). A category hint
-restricts them to that category when the library has it, else to its aliases
-(``category_aliases.json``); with neither, everything is scored and a note says so.
-Ranking is by score, ties by asset id, so results are deterministic.
-
-Embeddings of asset texts and thumbnails are cached in ``LIB/.cache/retrieval/``
-(:mod:`holomj.retrieval.cache`); query embeddings are cached in memory per retriever.
+"""Choosing library assets for plan objects: one per instance, among the best ranked
+(:mod:`holomj.retrieval.ranking`, Holodeck's score M = α·V + β·T − γ·S).
 
 **Assets on demand** (with a ``synthesiser``, :class:`holomj.jobs.synthesis.LibrarySynthesiser`,
 as ``generate`` passes one): :meth:`AssetRetriever.choose` reads the attributes the description
@@ -47,217 +24,49 @@ as before (every asset scored when the category is unknown, with a note).
 
 from __future__ import annotations
 
-import functools
-import json
-from collections.abc import Sequence
-from dataclasses import dataclass, replace
-from importlib import resources
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+from typing_extensions import Unpack
 
 from holomj.errors import InputError
-from holomj.library.store import (
-    BUILTIN_BOX,
-    AssetLibrary,
-    LibraryAsset,
-    category_aliases,
-    normalise_category,
-)
-from holomj.retrieval.cache import EmbeddingCache, cache_file, content_key
-from holomj.retrieval.index import (
-    FULL_PRODUCT_SHARE,
-    AssetIndex,
-    approximate_text_scores,
-    exact_text_scores,
-    shortlist,
-    size_discrepancies,
-    text_error_bound,
+from holomj.library.store import AssetLibrary
+from holomj.retrieval.ranking import AssetRanker, RankerOptions
+from holomj.retrieval.scores import (
+    DEFAULT_WEIGHTS,
+    RetrievalWeights,
+    ScoredAsset,
+    check_placement,
+    check_size,
+    size_discrepancy,
 )
 from holomj.retrieval.text import TextEncoder
-from holomj.retrieval.visual import VisualScorer, best_view_score, visual_scorer_from_env
-from holomj.spec.assets import PLACEMENTS
+from holomj.retrieval.visual import visual_scorer_from_env
+from holomj.spec.categories import asset_axes, normalise_category
 
-SIZE_CAP_M = 1.5
 SIMILARITY_FLOOR = 0.8
 """Least text cosine between two category names for one to stand in for the other (with the
 default MiniLM encoder, couch/sofa and bookcase/bookshelf pass; treadmill/desk, 0.2-0.4, and
-kettlebell/pot do not). Listed aliases (``category_aliases.json``) always pass."""
+kettlebell/pot do not). Listed stand-ins (``category_facts.json``) always pass."""
 SYNTH_STYLES = 4
 """Style seeds an asset made on demand is drawn from (the run's generator picks one)."""
-ON_DEMAND_SOURCES = frozenset({"holomj synthesised", "holomj proxy"})
-KEPT_PRODUCTS = 8
-"""Descriptions whose scores against the whole embedding matrix a retriever keeps."""
 VARIED_POOL = 3
 """``varied``: instances draw from the best asset and up to this many more of its category."""
-NO_CLIP_NOTE = (
-    "CLIP weights not configured: the visual term V is left out and its weight goes to the "
-    "text term T (set HOLOMJ_CLIP_WEIGHTS to a local open_clip checkpoint to use V)"
-)
 
 
-@dataclass(frozen=True)
-class RetrievalWeights:
-    """α, β, γ of M = α·V + β·T − γ·S."""
-
-    visual: float = 100.0
-    text: float = 1.0
-    size: float = 10.0
-
-
-@dataclass(frozen=True)
-class ScoredAsset:
-    """One candidate with its score and the terms it was made of (V None: left out)."""
-
-    asset_id: str
-    category: str
-    score: float
-    visual: float | None
-    text: float
-    size: float
-    how: str = "ranked"
-    attributes_asked: dict[str, str] | None = None
-    attributes_honoured: dict[str, str] | None = None
-    proxy: bool = False
-    attributes_how: dict[str, str] | None = None
-    """Per part asked (``handles``...): how it was honoured, or why not."""
-
-
-def asset_text(asset: LibraryAsset) -> str:
-    """What T compares a description with: ``"nightstand (bedside table, night table): a
-    walnut nightstand ..."``: the category, its other names, the description."""
-    words = " ".join(asset.meta.category.replace("_", " ").replace("-", " ").split())
-    others = [n for n in category_synonyms().get(asset.meta.category, ()) if n != words]
-    if others:
-        words = f"{words} ({', '.join(others[:MAX_SYNONYMS])})"
-    description = " ".join(asset.meta.description.split())
-    return f"{words}: {description}" if description else words
-
-
-MAX_SYNONYMS = 4
-
-
-@functools.cache
-def category_synonyms() -> dict[str, tuple[str, ...]]:
-    """Other names of each category, from the knowledge base's object kinds (data only: the
-    kinds' names and aliases in ``holomj/data/knowledge/objects.json``)."""
-    data = json.loads(
-        resources.files("holomj.data").joinpath("knowledge/objects.json").read_text("utf-8")
-    )
-    out: dict[str, list[str]] = {}
-    for name, kind in data.get("objects", {}).items():
-        names = out.setdefault(kind["category"], [])
-        for word in [name, *kind.get("aliases", [])]:
-            if word not in names:
-                names.append(word)
-    return {k: tuple(v) for k, v in out.items()}
-
-
-def _check_placement(placement: str, description: str) -> None:
-    if placement not in PLACEMENTS:
-        raise InputError(
-            f"unknown placement {placement!r}",
-            where=description,
-            fix=f"use one of: {', '.join(PLACEMENTS)}",
-        )
-
-
-def size_discrepancy(
-    requested: tuple[float, float, float], asset_size: tuple[float, float, float]
-) -> float:
-    """S in metres: ``requested`` is (width, depth, height), ``asset_size`` the asset's (x, y, z).
-
-    The asset's width is its y extent and its depth its x extent (front faces +X); the
-    footprint may also be turned by 90°. Each difference is capped at :data:`SIZE_CAP_M`.
-    """
-    width, depth, height = requested
-    x, y, z = asset_size
-    dz = min(abs(z - height), SIZE_CAP_M)
-
-    def footprint(w: float, d: float) -> float:
-        return min(abs(w - width), SIZE_CAP_M) + min(abs(d - depth), SIZE_CAP_M)
-
-    return (min(footprint(y, x), footprint(x, y)) + dz) / 3.0
-
-
-class AssetRetriever:
-    """Ranks and chooses a library's assets for object descriptions.
-
-    The per-asset arrays (:class:`~holomj.retrieval.index.AssetIndex`) and the text embedding
-    matrix are built once, on first use; a query embedding is computed once per description.
-    Without the visual term, the best ``limit`` candidates are found from one float32 matrix
-    product and then scored exactly (:mod:`holomj.retrieval.index`): the same results as
-    scoring every candidate exactly, at a fraction of the cost on a large library.
-    """
+class AssetRetriever(AssetRanker):
+    """Chooses a library's assets for plan objects (an
+    :class:`~holomj.retrieval.chooser.AssetChooser`), making them on demand with a
+    ``synthesiser`` (see the module docstring)."""
 
     def __init__(
-        self,
-        library: AssetLibrary,
-        *,
-        encoder: TextEncoder | None = None,
-        visual: VisualScorer | None = None,
-        weights: RetrievalWeights = RetrievalWeights(),
-        synthesiser: Any = None,
+        self, library: AssetLibrary, *, synthesiser: Any = None, **options: Unpack[RankerOptions]
     ) -> None:
-        self.library = library
-        self.weights = weights
+        super().__init__(library, **options)
         self.synthesiser = synthesiser
-        self._category_vectors: dict[str, np.ndarray] = {}
-        self.notes: list[str] = []
-        self._encoder = encoder
-        self._visual = visual
-        self._assets = [library.get(i) for i in library.ids() if i != BUILTIN_BOX]
-        self._index_of = {a.meta.id: k for k, a in enumerate(self._assets)}
-        self._table: AssetIndex | None = None
-        self._text_matrix: np.ndarray | None = None
-        self._max_norm = 0.0
-        self._views: list[np.ndarray] | None = None
-        self._text_queries: dict[str, np.ndarray] = {}
-        self._visual_queries: dict[str, np.ndarray] = {}
         self._recorded: dict[int, dict[str, str]] = {}
-        self._products: dict[str, np.ndarray] = {}
-        if visual is None:
-            self._note(NO_CLIP_NOTE)
-
-    @property
-    def encoder(self) -> TextEncoder:
-        """The text encoder (the default one is loaded on first use)."""
-        if self._encoder is None:
-            from holomj.retrieval.text import text_encoder
-
-            self._encoder = text_encoder()
-        return self._encoder
-
-    @property
-    def index(self) -> AssetIndex:
-        """The per-asset arrays (built on first use)."""
-        if self._table is None:
-            self._table = AssetIndex.build(self._assets, ON_DEMAND_SOURCES)
-        return self._table
-
-    def _note(self, note: str) -> None:
-        if note not in self.notes:
-            self.notes.append(note)
-
-    def rank(
-        self,
-        description: str,
-        *,
-        size: tuple[float, float, float] | None = None,
-        placement: str = "floor",
-        category: str | None = None,
-        limit: int = 10,
-    ) -> list[ScoredAsset]:
-        """The ``limit`` best candidates for ``description``, best first.
-
-        ``size`` is (width, depth, height) in metres (a plan object's), ``placement`` one of
-        floor, wall, object (on a receptacle) or ceiling, ``category`` the planner's hint.
-        """
-        if limit < 1:
-            raise InputError(f"limit must be at least 1, got {limit}", where="rank")
-        rows = self._candidates(description, placement, category)
-        return self._top(description, size, rows, limit)
 
     def choose(
         self,
@@ -312,8 +121,6 @@ class AssetRetriever:
         chosen = [picks[k % len(picks)] for k in range(quantity)]
         order = rng.permutation(quantity)
         return [chosen[int(k)] for k in order]
-
-    # -- assets on demand --------------------------------------------------------------------
 
     def _choose_on_demand(
         self,
@@ -380,16 +187,11 @@ class AssetRetriever:
     def _own_candidates(self, description: str, placement: str, category: str | None) -> np.ndarray:
         """Rows of the library's own assets (none made on demand) of ``category`` or its
         aliases."""
-        _check_placement(placement, description)
+        check_placement(placement, description)
         placed = self._placed(placement)
         if category is None:
             return np.flatnonzero(placed)
-        key = normalise_category(category)
-        exact = self.index.of_categories(placed, {key})
-        if exact.size:
-            return exact
-        aliases = {normalise_category(c) for c in category_aliases().get(key, [])}
-        return self.index.of_categories(placed, aliases)
+        return self._of_category(placed, category)
 
     def _labelled(self, pick: ScoredAsset, how: str, asked: dict[str, str]) -> ScoredAsset:
         honoured: dict[str, str] = {}
@@ -421,7 +223,7 @@ class AssetRetriever:
         asked: dict[str, str],
         rng: np.random.Generator,
     ) -> ScoredAsset:
-        target = None if size is None else _asset_size(_check_size(size, description))
+        target = None if size is None else asset_axes(check_size(size, description))
         seed = int(rng.integers(SYNTH_STYLES))
         made = self.synthesiser.synthesise(category, target, seed, asked)
         for note in made.notes:
@@ -437,7 +239,7 @@ class AssetRetriever:
         asked: dict[str, str],
     ) -> ScoredAsset:
         label = category or description
-        target = _asset_size(_check_size(size, description)) if size is not None else None
+        target = asset_axes(check_size(size, description)) if size is not None else None
         if target is None:
             target = _DEFAULT_PROXY_SIZE.get(placement, (0.5, 0.5, 0.5))
         made = self.synthesiser.proxy(label, target, placement, asked)
@@ -458,12 +260,10 @@ class AssetRetriever:
         asked: dict[str, str],
     ) -> ScoredAsset:
         asset = self.library.get(made.asset_id)
-        text = float(
-            (self.encoder.encode([asset_text(asset)])[0] * self._text_query(description)).sum()
-        )
+        text = float((self.vectors.text_of(asset) * self.vectors.text_query(description)).sum())
         sizes = 0.0
         if size is not None:
-            sizes = size_discrepancy(_check_size(size, description), asset.meta.size)
+            sizes = size_discrepancy(check_size(size, description), asset.meta.size)
         w = self.weights
         return ScoredAsset(
             asset_id=made.asset_id,
@@ -487,181 +287,13 @@ class AssetRetriever:
         names = sorted(set(self.index.categories[self._placed(placement)].tolist()))
         if not names:
             return None
-        wanted = self._category_vector(category)
+        wanted = self.vectors.category_vector(category)
         best, best_name = -1.0, None
         for name in names:
-            value = float((self._category_vector(name) * wanted).sum())
+            value = float((self.vectors.category_vector(name) * wanted).sum())
             if value > best:
                 best, best_name = value, name
         return best_name if best >= SIMILARITY_FLOOR else None
-
-    def _category_vector(self, category: str) -> np.ndarray:
-        words = " ".join(category.replace("_", " ").replace("-", " ").split()).lower()
-        if words not in self._category_vectors:
-            self._category_vectors[words] = self.encoder.encode([words])[0].astype(np.float64)
-        return self._category_vectors[words]
-
-    # -- candidates -------------------------------------------------------------------------
-
-    def _candidates(self, description: str, placement: str, category: str | None) -> np.ndarray:
-        _check_placement(placement, description)
-        placed = self.index.placed(placement)
-        if not placed.any():
-            raise InputError(
-                f"no {placement} asset in library {self.library.name!r} for {description!r}",
-                where=str(self.library.root),
-                fix="import one with 'holomj assets import' or use another library",
-            )
-        if category is None:
-            return np.flatnonzero(placed)
-        key = normalise_category(category)
-        exact = self.index.of_categories(placed, {key})
-        if exact.size:
-            return exact
-        aliases = {normalise_category(c) for c in category_aliases().get(key, [])}
-        aliased = self.index.of_categories(placed, aliases)
-        if aliased.size:
-            return aliased
-        self._note(
-            f"no {placement} asset of category {category!r} (or its aliases) in library "
-            f"{self.library.name!r}: every {placement} asset was scored for {description!r}"
-        )
-        return np.flatnonzero(placed)
-
-    # -- scores -----------------------------------------------------------------------------
-
-    def _top(
-        self,
-        description: str,
-        size: tuple[float, float, float] | None,
-        rows: np.ndarray,
-        limit: int | None,
-    ) -> list[ScoredAsset]:
-        """The ``limit`` best of ``rows`` (None: all), best first, ties by asset id."""
-        rows = np.asarray(rows, dtype=np.int64)
-        if size is None:
-            sizes = np.zeros(rows.size)
-        else:
-            requested = _check_size(size, description)
-            sizes = size_discrepancies(requested, self.index.sizes[rows], SIZE_CAP_M)
-        w = self.weights
-        visual = self._visual_terms(description, rows)
-        text_weight = w.text if visual is not None else w.text + w.visual
-        matrix = self._text_vectors()
-        query = self._text_query(description)
-        if visual is None and limit is not None and limit < rows.size:
-            approximate = text_weight * self._approximate(description, rows)
-            error = abs(text_weight) * text_error_bound(matrix.shape[1], self._max_norm, query)
-            keep = shortlist(approximate - w.size * sizes, limit, error)
-            rows, sizes = rows[keep], sizes[keep]
-        text = exact_text_scores(matrix, query, rows)
-        score = text_weight * text - w.size * sizes
-        if visual is not None:
-            known = np.array([v is not None for v in visual])
-            values = np.array([v if v is not None else np.nan for v in visual], dtype=np.float64)
-            neutral = float(np.median(values[known]))
-            score = score + w.visual * np.where(known, values, neutral)
-        order = self.index.order(rows, score)
-        if limit is not None:
-            order = order[:limit]
-        return [
-            ScoredAsset(
-                asset_id=self.index.ids[int(rows[k])],
-                category=str(self.index.categories[int(rows[k])]),
-                score=float(score[k]),
-                visual=None if visual is None else visual[k],
-                text=float(text[k]),
-                size=float(sizes[k]),
-            )
-            for k in order
-        ]
-
-    def _approximate(self, description: str, rows: np.ndarray) -> np.ndarray:
-        """Approximate T of ``rows``; a product with the whole matrix is kept for the last
-        :data:`KEPT_PRODUCTS` descriptions (``choose`` ranks twice, instances rank again)."""
-        matrix, query = self._text_vectors(), self._text_query(description)
-        if rows.size <= FULL_PRODUCT_SHARE * matrix.shape[0]:
-            return approximate_text_scores(matrix, query, rows)
-        if description not in self._products:
-            if len(self._products) >= KEPT_PRODUCTS:
-                del self._products[next(iter(self._products))]
-            self._products[description] = approximate_text_scores(
-                matrix, query, np.arange(matrix.shape[0])
-            )
-        return self._products[description][rows]
-
-    def _text_query(self, description: str) -> np.ndarray:
-        if description not in self._text_queries:
-            self._text_queries[description] = self.encoder.encode([description])[0]
-        return self._text_queries[description]
-
-    def _text_vectors(self) -> np.ndarray:
-        if self._text_matrix is None:
-            encoder = self.encoder
-            texts = [asset_text(a) for a in self._assets]
-            keys = [content_key(encoder.name, t) for t in texts]
-            cache = self._cache(encoder.name)
-            matrix = cache.fetch(keys, lambda idx: encoder.encode([texts[i] for i in idx]))
-            for note in cache.notes:
-                self._note(note)
-            self._text_matrix = np.ascontiguousarray(matrix, dtype=np.float32)
-            if matrix.size:
-                self._max_norm = float(np.sqrt((matrix.astype(np.float64) ** 2).sum(1).max()))
-        return self._text_matrix
-
-    def _cache(self, model_name: str) -> EmbeddingCache:
-        return EmbeddingCache(cache_file(self.library.root, model_name))
-
-    def _visual_terms(self, description: str, rows: np.ndarray) -> list[float | None] | None:
-        """V per candidate (None for one without thumbnails), or None when V is left out."""
-        if self._visual is None or self.weights.visual == 0.0:
-            return None
-        views = self._thumbnail_vectors()
-        if not any(views[r].shape[0] for r in rows):
-            self._note(
-                "no candidate asset has thumbnails: the visual term V is left out and its "
-                "weight goes to the text term T"
-            )
-            return None
-        if description not in self._visual_queries:
-            self._visual_queries[description] = self._visual.encode_texts([description])[0]
-        query = self._visual_queries[description]
-        bare = sum(1 for r in rows if views[r].shape[0] == 0)
-        if bare:
-            self._note(
-                "assets without thumbnails get the median visual score of the others "
-                f"(e.g. {bare} candidate(s) for {description!r})"
-            )
-        return [best_view_score(query, views[r]) if views[r].shape[0] else None for r in rows]
-
-    def _thumbnail_vectors(self) -> list[np.ndarray]:
-        if self._views is not None:
-            return self._views
-        scorer = self._visual
-        assert scorer is not None
-        paths: list[Path] = []
-        owners: list[int] = []
-        for k, asset in enumerate(self._assets):
-            for rel in asset.meta.thumbnails:
-                path = asset.path(rel)
-                if path.is_file():
-                    paths.append(path)
-                    owners.append(k)
-                else:
-                    self._note(f"thumbnail {rel!r} of asset {asset.meta.id!r} is missing")
-        keys = [content_key(scorer.name, p.read_bytes()) for p in paths]
-        cache = self._cache(scorer.name)
-        matrix = cache.fetch(keys, lambda idx: scorer.encode_images([paths[i] for i in idx]))
-        for note in cache.notes:
-            self._note(note)
-        dim = matrix.shape[1] if matrix.size else 0
-        views = [np.zeros((0, dim), np.float32) for _ in self._assets]
-        for k in range(len(self._assets)):
-            mine = [row for row, owner in enumerate(owners) if owner == k]
-            if mine:
-                views[k] = matrix[mine]
-        self._views = views
-        return views
 
 
 _DEFAULT_PROXY_SIZE = {
@@ -672,12 +304,6 @@ _DEFAULT_PROXY_SIZE = {
 }
 
 
-def _asset_size(size: tuple[float, float, float]) -> tuple[float, float, float]:
-    """A plan size (width, depth, height) as an asset size (x = depth, y = width, z)."""
-    width, depth, height = size
-    return (depth, width, height)
-
-
 def _matches(recorded: dict[str, str], hard: dict[str, str]) -> bool:
     return all(recorded.get(k) == v for k, v in hard.items())
 
@@ -686,23 +312,13 @@ def _words(attributes: dict[str, str]) -> str:
     return " ".join(attributes.values())
 
 
-def _check_size(size: Sequence[float], description: str) -> tuple[float, float, float]:
-    values = tuple(float(v) for v in size)
-    if len(values) != 3 or not all(np.isfinite(v) and v > 0 for v in values):
-        raise InputError(
-            f"size must be three positive numbers (width, depth, height), got {list(size)}",
-            where=description,
-        )
-    return values  # type: ignore[return-value]
-
-
 def retriever_for(
     library: AssetLibrary,
     *,
     clip_weights: Path | None = None,
     clip_model: str | None = None,
     encoder: TextEncoder | None = None,
-    weights: RetrievalWeights = RetrievalWeights(),
+    weights: RetrievalWeights = DEFAULT_WEIGHTS,
     synthesiser: Any = None,
 ) -> AssetRetriever:
     """A retriever for ``library`` with the visual term when CLIP weights are configured.

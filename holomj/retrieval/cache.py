@@ -81,8 +81,9 @@ class EmbeddingCache:
                 stored.clear()
                 missing = list(range(len(keys)))
                 fresh = self._compute(compute, missing)
-        for row, index in enumerate(missing):
-            stored[keys[index]] = fresh[row]
+        if fresh is not None:
+            for row, index in enumerate(missing):
+                stored[keys[index]] = fresh[row]
         self.stats = CacheStats(hits=len(keys) - len(missing), computed=len(missing))
         if not keys:
             return np.zeros((0, 0), dtype=np.float32)

@@ -82,8 +82,8 @@ def preprocess(image: Any, size: int) -> np.ndarray:
     left = (resized.width - size) // 2
     top = (resized.height - size) // 2
     crop = resized.crop((left, top, left + size, top + size))
-    pixels = np.asarray(crop, dtype=np.float32) / 255.0
-    pixels = (pixels - np.asarray(CLIP_MEAN, np.float32)) / np.asarray(CLIP_STD, np.float32)
+    unit = np.asarray(crop, dtype=np.float32) / 255.0
+    pixels = (unit - np.asarray(CLIP_MEAN, np.float32)) / np.asarray(CLIP_STD, np.float32)
     return np.ascontiguousarray(pixels.transpose(2, 0, 1))
 
 

@@ -33,17 +33,18 @@ PENETRATION_TOLERANCE_M = 0.001
 
 def add_robot(
     compiled: CompiledScene,
-    spec: str,
+    spec: str | RobotSource,
     rng: np.random.Generator,
     *,
     clearance: float = DEFAULT_CLEARANCE_M,
     room: str | None = None,
 ) -> CompiledScene:
-    """``compiled`` with the robot ``spec`` (a registry name or an MJCF path) on a free spot.
+    """``compiled`` with the robot ``spec`` (a registry name or an MJCF path, or the robot it
+    names, already resolved) on a free spot.
 
     Raises :class:`~holomj.errors.InputError` for an unknown robot or when no spot is free.
     """
-    source = resolve_robot(spec)
+    source = spec if isinstance(spec, RobotSource) else resolve_robot(spec)
     prepared = prepare_robot(source)
     grid = build_floor_grid(compiled.model, compiled.scene)
     reach = compute_reach(grid, compiled.scene)

@@ -26,7 +26,7 @@ the :class:`EditReport`. Nothing in an operations file is ever executed.
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Final, Literal, get_args
+from typing import Annotated, Any, Final, Literal
 
 from pydantic import BaseModel, Field, RootModel, model_validator
 
@@ -40,6 +40,7 @@ from holomj.spec.base import (
     Vec3,
     validate_model,
 )
+from holomj.spec.relations import EDIT_OBJECT_KINDS, EDIT_PLACE_KINDS, EditRelationKind
 
 EDIT_SCHEMA_VERSION: Final = "1.0"
 MAX_OPERATIONS = 50  # per file (and per refine round)
@@ -56,31 +57,10 @@ Attribute = Annotated[
 Size = tuple[PositiveFloat, PositiveFloat, PositiveFloat]
 Yaw = Annotated[float, Field(ge=-3600.0, le=3600.0)]
 
-# Relations an edit may ask of a floor object: places (no target) and relations to another
-# object of the room (its id). ``above`` is for wall and ceiling objects.
-EditPlaceKind = Literal[
-    "corner",
-    "wall",
-    "middle",
-    "under_window",
-    "by_window",
-    "by_door",
-    "facing_window",
-    "facing_door",
-]
-EditObjectRelationKind = Literal[
-    "adjacent_to",
-    "near",
-    "in_front_of",
-    "behind",
-    "facing",
-    "across_from",
-    "around",
-    "above",
-]
-EditRelationKind = Literal[EditPlaceKind, EditObjectRelationKind]
-PLACE_RELATIONS: tuple[str, ...] = get_args(EditPlaceKind)
-OBJECT_RELATIONS: tuple[str, ...] = get_args(EditObjectRelationKind)
+# Relations an edit may ask of a floor object (:mod:`holomj.spec.relations`): places (no target)
+# and relations to another object of the room (its id). ``above`` is for wall and ceiling objects.
+PLACE_RELATIONS = EDIT_PLACE_KINDS
+OBJECT_RELATIONS = EDIT_OBJECT_KINDS
 
 
 class EditRelation(FrozenModel):

@@ -12,13 +12,14 @@ object's front faces +X in the asset frame), height up.
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Final, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
+from holomj.spec.relations import PlanRelationKind
 
-PLAN_SCHEMA_VERSION: Final = "1.0"
+PLAN_SCHEMA_VERSION: Literal["1.0"] = "1.0"
 
 # Names of plan objects: Holodeck-like ("dining chair"), no '|' or ',' (they separate fields of
 # the constraint text form) and no trailing "-<n>" (that is an instance suffix).
@@ -28,6 +29,10 @@ ObjectName = Annotated[
 Size3 = tuple[PositiveFloat, PositiveFloat, PositiveFloat]
 Variance = Literal["same", "varied"]
 RoomSide = Annotated[float, Field(ge=1.0, le=40.0)]
+# The shapes of a kitchen's counter run (see holomj.layout.counter_runs).
+CounterRunShape = Literal["one_wall", "galley", "L", "U"]
+# Rows asked for a floor object's instances: how many, or "any" (rows, the count left open).
+RowsAsked = Annotated[int, Field(ge=1, le=20)] | Literal["any"]
 
 
 def instance_name(name: str, index: int) -> str:
@@ -81,6 +86,11 @@ class PlanObject(FrozenModel):
         description="Defining furniture of its room (a bed in a bedroom): laid out first, and "
         "the plan changes (a window moves) before it is dropped.",
     )
+    rows: RowsAsked | None = Field(
+        default=None,
+        description="Floor objects only: the request asks for the instances in rows (desks in "
+        "a classroom): how many rows, or 'any' when it does not say; null when it asks none.",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> PlanObject:
@@ -88,6 +98,8 @@ class PlanObject(FrozenModel):
             raise ValueError("'above' is for wall and ceiling objects")
         if self.faced_by is not None and self.placement != "wall":
             raise ValueError("'faced_by' is for wall objects")
+        if self.rows is not None and self.placement != "floor":
+            raise ValueError("'rows' is for floor objects")
         return self
 
     def instances(self) -> list[str]:
@@ -100,30 +112,6 @@ class PlanWindows(FrozenModel):
 
     count: Annotated[int, Field(ge=0, le=12)] | None = None
     kind: Literal["fixed", "hung", "slider"] | None = None
-
-
-PlanRelationKind = Literal[
-    "corner",
-    "wall",
-    "middle",
-    "under_window",
-    "by_window",
-    "by_door",
-    "facing_window",
-    "facing_door",
-    "adjacent_to",
-    "near",
-    "in_front_of",
-    "behind",
-    "facing",
-    "across_from",
-    "around",
-    "both_sides",
-    "in_row",
-    "on",
-    "above",
-    "ceiling",
-]
 
 
 class PlanRelation(FrozenModel):
@@ -167,6 +155,11 @@ class PlanRoom(FrozenModel):
         default_factory=list,
         max_length=200,
         description="Where the request puts the room's objects (weighted above the defaults).",
+    )
+    counter_run_shape: CounterRunShape | None = Field(
+        default=None,
+        description="The shape the request or the room's words ask for the kitchen's counter "
+        "run ('a galley kitchen', 'U-shaped counters'); null: the layout chooses.",
     )
 
     @model_validator(mode="after")

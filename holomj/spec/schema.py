@@ -11,6 +11,7 @@ from holomj.spec.assets import AssetMeta, LibraryIndex
 from holomj.spec.plan import ScenePlan
 from holomj.spec.report import StabilityReport
 from holomj.spec.scene import SceneSpec
+from holomj.spec.tasks import TaskSet
 
 SCHEMAS: dict[str, type[BaseModel]] = {
     "scene": SceneSpec,
@@ -18,11 +19,12 @@ SCHEMAS: dict[str, type[BaseModel]] = {
     "library": LibraryIndex,
     "report": StabilityReport,
     "plan": ScenePlan,
+    "task": TaskSet,
 }
 
 
 def json_schema(kind: str = "scene") -> dict[str, Any]:
-    """The JSON Schema of ``kind`` (scene, asset, library, report or plan)."""
+    """The JSON Schema of ``kind`` (scene, asset, library, report, plan or task)."""
     try:
         model = SCHEMAS[kind]
     except KeyError:

@@ -6,7 +6,7 @@ from dataclasses import replace
 
 import pytest
 
-from asset_pipeline.procedural import generate_asset
+from asset_pipeline.procedural import category_info, generate_asset
 from asset_pipeline.procedural.attributes import (
     COLOURS,
     MATERIALS,
@@ -14,8 +14,8 @@ from asset_pipeline.procedural.attributes import (
     PartAttributes,
     attributes_from_text,
     colour_rgb,
-    parts_report,
 )
+from asset_pipeline.procedural.conditioning import parts_report
 from tests.asset_pipeline.look_helpers import shows
 
 
@@ -226,7 +226,7 @@ def test_part_request_recolours_only_those_parts() -> None:
 def test_design_is_redrawn_until_it_has_the_part() -> None:
     asked = attributes_from_text("a sofa with wooden legs", "sofa")
     for seed in range(6):
-        report = parts_report("sofa", None, seed, asked)
+        report = parts_report(category_info("sofa"), None, seed, asked)
         assert report["legs"].startswith("wooden on the legs (4 parts)")
 
 
@@ -235,7 +235,7 @@ def test_a_missing_part_is_reported_not_faked() -> None:
     sofa = generate_asset("sofa", "s", None, 0, asked)
     assert sofa.meta.attributes == {}
     assert not _by_name(sofa, "__handles_")
-    assert parts_report("sofa", None, 0, asked) == {
+    assert parts_report(category_info("sofa"), None, 0, asked) == {
         "handles": "not honoured: this sofa has no handles"
     }
 
@@ -244,7 +244,7 @@ def test_a_stand_in_part_is_said() -> None:
     asked = attributes_from_text("a round coffee table with black legs", "coffee_table")
     table = generate_asset("coffee_table", "t", (0.8, 0.8, 0.42), 0, asked)
     assert table.meta.attributes == {"shape": "round", "legs.colour": "black"}
-    report = parts_report("coffee_table", (0.8, 0.8, 0.42), 0, asked)
+    report = parts_report(category_info("coffee_table"), (0.8, 0.8, 0.42), 0, asked)
     assert report["legs"].startswith("black on the base") and "has no legs" in report["legs"]
     assert "black" in table.meta.description
 
@@ -261,7 +261,7 @@ def test_object_colour_goes_to_the_parts_no_request_names() -> None:
 
 def test_role_tags_do_not_change_the_assets() -> None:
     from asset_pipeline.procedural.assembly import assemble
-    from asset_pipeline.procedural.registry import design_for
+    from asset_pipeline.procedural.catalog import design_for
     from asset_pipeline.procedural.roles import role_of, untagged
 
     for category in ("sofa", "dining_chair", "desk", "kitchen_cabinet", "floor_lamp", "bed"):

@@ -17,9 +17,11 @@ import trimesh
 from typer.testing import CliRunner
 
 from asset_pipeline.decompose import degraded_reason
+from asset_pipeline.import_cache import CACHE_DIR, PENDING_DIR
+from asset_pipeline.import_plan import plan_jobs
 from asset_pipeline.importer import ImportOptions
 from asset_pipeline.library_writer import write_library
-from asset_pipeline.manage import CACHE_DIR, PENDING_DIR, coacd_params, plan_jobs, run_imports
+from asset_pipeline.manage import coacd_params, run_imports
 from holomj.cli import app
 from holomj.library import AssetLibrary
 

@@ -14,8 +14,9 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
+from asset_pipeline.import_plan import asset_id_for, plan_jobs
 from asset_pipeline.importer import ImportOptions
-from asset_pipeline.manage import asset_id_for, coacd_params, plan_jobs, run_imports
+from asset_pipeline.manage import coacd_params, run_imports
 from holomj.cli import app
 from holomj.errors import InputError
 from holomj.library import AssetLibrary
@@ -94,8 +95,8 @@ def test_ycb_layout_gives_one_meaningful_id_per_item(tmp_path: Path, shared_asse
 def test_ids_never_silently_replace_another_files_asset(
     tmp_path: Path, shared_assets: Path
 ) -> None:
+    from asset_pipeline.import_plan import existing_assets
     from asset_pipeline.library_writer import write_library
-    from asset_pipeline.manage import existing_assets
 
     library = write_library(tmp_path / "lib", "lib", [])
     first = tmp_path / "shop_a" / "d6_dice" / "google_16k" / "model.glb"

@@ -31,9 +31,9 @@ from asset_pipeline.procedural import (
     generate_asset,
 )
 from asset_pipeline.procedural.assembly import AssetDesign, assemble, centred_parts
+from asset_pipeline.procedural.catalog import design_for
 from asset_pipeline.procedural.kit import LINEN, block
 from asset_pipeline.procedural.parts import Box, Collider, Mesh
-from asset_pipeline.procedural.registry import design_for
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe, Sphere, lathe_mesh
 from holomj.errors import InputError
 from holomj.spec.assets import AssetMeta

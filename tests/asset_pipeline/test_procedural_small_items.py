@@ -20,7 +20,7 @@ from scipy.spatial import ConvexHull
 
 from asset_pipeline.procedural import CATEGORIES, generate_asset
 from asset_pipeline.procedural.assembly import centred_parts
-from asset_pipeline.procedural.registry import design_for
+from asset_pipeline.procedural.catalog import design_for
 
 KNOWLEDGE = Path(__file__).parents[2] / "holomj" / "data" / "knowledge" / "objects.json"
 

@@ -175,7 +175,7 @@ def test_a_render_failure_is_printed_recorded_and_fails_strict(
     def fake_render(folder: Path, **kwargs) -> RenderSummary:
         return RenderSummary(str(folder), "egl", "fake", {}, ["renders/top.png"], [])
 
-    def fake_page(folder: Path) -> Path:
+    def fake_page(folder: Path, **kwargs) -> Path:
         (folder / "report.html").write_text("<html></html>")
         return folder / "report.html"
 

@@ -11,8 +11,9 @@ import pytest
 from PIL import Image
 
 from holomj.errors import FormatError
-from holomj.formats.navmap import CODES, build_navmap, rle_decode, rle_encode
+from holomj.formats.navmap import CODES, rle_decode, rle_encode
 from holomj.jobs.folder import write_scene_folder
+from holomj.jobs.robot_learning import build_navmap
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.spec.scene import SceneSpec

@@ -10,8 +10,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from holomj.formats.objects_json import objects_record
 from holomj.jobs.folder import write_scene_folder
+from holomj.jobs.robot_learning import objects_json
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.robots.attach import add_robot
@@ -24,7 +24,7 @@ def compiled(two_room_scene: SceneSpec, empty_library: AssetLibrary):
 
 
 def test_objects(compiled) -> None:
-    record = objects_record(compiled)
+    record = objects_json(compiled)
     assert record["schema_version"] == "1.0" and record["scene"] == "two rooms"
     assert [r["id"] for r in record["rooms"]] == ["kitchen", "living"]
     assert record["rooms"][1]["area_m2"] == pytest.approx(23.0)
@@ -52,7 +52,7 @@ def test_objects(compiled) -> None:
 
 
 def test_doors(compiled) -> None:
-    doors = {d["id"]: d for d in objects_record(compiled)["doors"]}
+    doors = {d["id"]: d for d in objects_json(compiled)["doors"]}
     kitchen, front = doors["kitchen_door"], doors["front_door"]
     assert kitchen["rooms"] == ["kitchen", "living"] and kitchen["width"] == 1.0
     (leaf,) = kitchen["leaves"]
@@ -66,7 +66,7 @@ def test_doors(compiled) -> None:
 
 
 def test_robot_and_export(compiled, tmp_path: Path) -> None:
-    assert objects_record(compiled)["robot"] is None
+    assert objects_json(compiled)["robot"] is None
     with_robot = add_robot(compiled, "jaco", np.random.default_rng(0))
     out = write_scene_folder(with_robot, tmp_path / "out")
     record = json.loads((out / "objects.json").read_text())

@@ -10,6 +10,7 @@ from importlib import resources
 import pytest
 
 from holomj.importers import ImportResult, import_procthor
+from holomj.importers.counter_shapes import counter_shape
 from holomj.importers.ids import sanitise
 from holomj.importers.materials import MaterialResolver, table_name
 from holomj.importers.substitute import (
@@ -189,8 +190,11 @@ def test_old_schema_objects_get_thor_categories(imported, name: str) -> None:
 @pytest.mark.parametrize("name", REAL_HOUSES)
 def test_objects_keep_their_true_size(imported, thor_library: AssetLibrary, name: str) -> None:
     house, result = imported[name]
-    assert len(result.scene.objects) == len(_kept(house, result))
+    runs = [o for o in result.scene.objects if o.id.endswith(("_side_left", "_side_right"))]
+    assert len(result.scene.objects) == len(_kept(house, result)) + len(runs)
     for obj, _ in _kept(house, result):
+        if counter_shape(obj["assetId"]):  # built as counter runs (test_counter_shapes)
+            continue
         true = [max(v, MIN_EXTENT) for v in thor_asset(obj["assetId"]).size]
         used = _used_size(result, thor_library, sanitise(obj["id"]))
         for axis in range(3):
@@ -224,7 +228,10 @@ def test_resting_objects_stay_on_their_support(
                 on_floor += 1
             continue
         parent_top = parent["position"]["y"] + thor_asset(parent["assetId"]).size[2] / 2
-        assert me.support == sanitise(parent["id"])
+        if counter_shape(parent["assetId"]):  # on the counter run under it
+            assert str(me.support).startswith(sanitise(parent["id"])), obj["id"]
+        else:
+            assert me.support == sanitise(parent["id"])
         if abs(bottom - parent_top) < 0.01:
             base = objects[me.support]
             base_height = thor_library.get(base.asset).meta.size[2] * base.scale3[2]
@@ -327,7 +334,7 @@ def _table_targets() -> list[str]:
 
 def test_turned_stand_in_keeps_tilted_orientation_consistent() -> None:
     from holomj.importers.frames import quat_from_euler_xyz, quat_from_unity
-    from holomj.importers.procthor import _turn_quat
+    from holomj.importers.house_objects import turn_quat as _turn_quat
 
     # a pure yaw: turning the quaternion by 90° is the yaw plus 90°
     turned = _turn_quat(quat_from_unity(0.0, 30.0, 0.0), 90.0)
@@ -356,7 +363,7 @@ def test_objects_that_open_prefer_articulated_stand_ins(default_library: AssetLi
 
     choice, meta = choose(True)  # a box with a lid that lifts, scaled to the THOR box
     assert meta.articulated and meta.category in ("toy_box", "trunk"), meta.id
-    assert "(the original opens)" in choice.substitution.reason  # type: ignore[union-attr]
+    assert "(the original opens)" in choice.substitution.reason  # type: ignore[union-attr]  # a stand-in was chosen
     choice, meta = choose(False)  # without the preference: the rigid cardboard box
     assert meta.category == "cardboard_box" and not meta.articulated
 

@@ -248,13 +248,35 @@ def test_an_object_that_cannot_be_saved_is_refused_and_nothing_is_written(
     )
     assert result.exit_code == 1, result.output
     message = " ".join(result.output.split())
-    assert "1 object(s) could not be made to stand: Cabinet|1|1" in message
+    # the cabinet that cannot be saved would be left out, and the house keep too little
+    assert "the house keeps only 50.0% of its 2 objects" in message
+    assert "left out: Cabinet|1|1" in message
     assert "--allow-invalid" in message
     assert not out.exists()
     assert not list(tmp_path.glob(".out*"))  # no temporary folder left behind
     with pytest.raises(SceneUnstableError):
         compile_file(house, out, library_path=library, check_seconds=0.0)
     assert not out.exists()
+
+
+def test_an_object_left_out_is_listed_and_strict_refuses(
+    library: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # two objects of which one cannot stand: below the 97 % share, so lower it for this test
+    monkeypatch.setattr("holomj.jobs.compile.MIN_KEPT_SHARE", 0.5)
+    house = _write(tmp_path / "house.json", UNSAVEABLE)
+    args = ["compile", str(house), "--library", str(library), "--check-seconds", "0"]
+    kept = CliRunner().invoke(app, [*args, "-o", str(tmp_path / "kept")])
+    assert kept.exit_code == 0, kept.output
+    assert "kept 1/2 objects (50.0%): 0 moved to another receptacle, 1 left out" in kept.stdout
+    assert "Cabinet|1|1: floor -> left out" in kept.stdout
+    report = json.loads((tmp_path / "kept" / "import_report.json").read_text())
+    assert report["valid"] is True and report["refusal"] is None
+    assert [r["object"] for r in report["left_out"]] == ["Cabinet|1|1"]
+    strict = CliRunner().invoke(app, [*args, "-o", str(tmp_path / "strict"), "--strict"])
+    assert strict.exit_code == 1, strict.output
+    assert "--strict: 1 object(s) would be left out: Cabinet|1|1" in " ".join(strict.output.split())
+    assert not (tmp_path / "strict").exists()
 
 
 def test_allow_invalid_writes_the_scene_marked_invalid(library: Path, tmp_path: Path) -> None:
@@ -268,10 +290,13 @@ def test_allow_invalid_writes_the_scene_marked_invalid(library: Path, tmp_path: 
     assert "INVALID" in result.stdout and "Cabinet|1|1" in result.stdout
     report = json.loads((out / "import_report.json").read_text())
     assert report["valid"] is False and report["allow_invalid"] is True
-    unsaved = {u["object"]: u["why"] for u in report["unsaved"]}
-    assert "needs a move of 550 mm" in unsaved["Cabinet|1|1"]
-    assert set(_objects(out)) == {"Cabinet|1|0", "Cabinet|1|1"}  # nothing deleted
-    assert not validate(out).ok
+    assert report["kept_share"] == 0.5 and "keeps only 50.0%" in report["refusal"]
+    left = {u["object"]: u for u in report["left_out"]}
+    assert "needs a move of 550 mm" in left["Cabinet|1|1"]["why"]
+    assert left["Cabinet|1|1"]["from"]["position"][:2] == pytest.approx([2.05, 2.0], abs=0.01)
+    assert left["Cabinet|1|1"]["to"] is None
+    assert set(_objects(out)) == {"Cabinet|1|0"}  # the one left out is listed, not written
+    assert validate(out).ok  # what is written stands
 
 
 def test_no_fix_compiles_as_imported_and_holomj_scenes_are_left_alone(

@@ -13,7 +13,8 @@ from pathlib import Path
 import pytest
 
 import holomj
-from holomj.edit.floor import RoomFloor, Wish, object_size, object_yaw
+from holomj.edit.floor import RoomFloor, Wish
+from holomj.edit.footprints import object_size, object_yaw
 from holomj.errors import InputError, OutputExistsError
 from holomj.jobs.edit import EDIT_REPORT, apply_edits
 from holomj.jobs.folder import open_library, read_scene

@@ -11,7 +11,7 @@ import pytest
 
 from holomj.jobs.generate import GenerateOptions, generate_scene
 from holomj.jobs.validate import validate
-from holomj.layout.room_furnishing import FIXED_CATEGORIES, object_id
+from holomj.layout.furniture_rules import FIXED_CATEGORIES, object_id
 from holomj.library.store import AssetLibrary
 
 PROMPTS = [

@@ -64,7 +64,7 @@ def test_proxy_objects_are_flagged(tmp_path: Path, default_library) -> None:
     from holomj.jobs.synthesis import LibrarySynthesiser
 
     made = LibrarySynthesiser(library).proxy("moon_rover", (1.0, 1.5, 1.0), "floor", {})
-    from holomj.jobs.generate import _mark_proxies
+    from holomj.jobs.generate_stages import mark_proxies
 
     scene = SceneSpec.model_validate(
         {
@@ -75,7 +75,7 @@ def test_proxy_objects_are_flagged(tmp_path: Path, default_library) -> None:
             ],
         }
     )
-    marked = _mark_proxies(scene, library)
+    marked = mark_proxies(scene, library)
     assert marked.objects[0].proxy is True
     dumped = marked.model_dump(mode="json", exclude_none=True)
     assert dumped["objects"][0]["proxy"] is True

@@ -24,7 +24,7 @@ from holomj.jobs.folder import open_library, read_scene
 from holomj.jobs.populate import populate_folder
 from holomj.library.store import AssetLibrary
 from holomj.plan.llm_config import LLMConfig
-from holomj.plan.llm_parse import LLMResponseError
+from holomj.plan.llm_json import LLMResponseError
 from holomj.refinement.pointing import PinholeCamera, hit_surface, parse_name, parse_pixel
 from tests.plan.llm_replay import replay_server
 

@@ -24,6 +24,7 @@ from holomj.errors import InputError, OutputExistsError
 from holomj.jobs.refine import REFINE_JSON, refine
 from holomj.library.store import AssetLibrary
 from holomj.plan.llm_config import LLMConfig
+from holomj.refinement.finding import Finding
 from holomj.refinement.goals import instruction_spec, refine_score
 from holomj.refinement.instruction import read_instruction
 from holomj.refinement.offline import propose, signature
@@ -147,7 +148,7 @@ def test_offline_planner_adds_then_moves_then_fixes_doors() -> None:
     unmet = [
         {"item": "armchair", "check": "relation", "held": False, "what": "armchair next to window"}
     ]
-    door = {"metric": "doors_clear", "object": "living_room.sofa_0", "reason": "blocks door_0"}
+    door = Finding(metric="doors_clear", object="living_room.sofa_0", reason="blocks door_0")
     second = propose(instruction, scene, unmet, [door], set())
     assert second.operations[0] == {
         "op": "move",

@@ -358,3 +358,36 @@ def test_the_page_is_written_atomically(two_room_folder: Path) -> None:
 def test_the_page_needs_an_output_folder(tmp_path: Path) -> None:
     with pytest.raises(FormatError, match="not found"):
         write_report_html(tmp_path / "nope")
+
+
+def test_the_report_page_uses_the_compiled_scene_without_reading_scene_xml(
+    two_room_folder: Path, two_room_compiled: CompiledScene
+) -> None:
+    expected = _parse(write_report_html(two_room_folder))
+    (two_room_folder / "scene.xml").write_text("<mujoco><broken")
+    page = _parse(write_report_html(two_room_folder, compiled=two_room_compiled))
+
+    # the same page; the 3D view's floats may differ in their last digits (scene.xml rounds)
+    def words(parsed: Page) -> list[str]:
+        return [t for t in parsed.text if len(t) < 1000]  # the GLB is one long base64 text
+
+    assert page.rows == expected.rows and words(page) == words(expected)
+    assert 'id="layer-' in (two_room_folder / "report.html").read_text(encoding="utf-8")
+    with pytest.raises(FormatError, match="MuJoCo cannot load it"):
+        write_report_html(two_room_folder)
+
+
+def test_renders_made_in_a_temporary_folder_name_the_final_one(
+    two_room_folder: Path, two_room_compiled: CompiledScene, tmp_path: Path
+) -> None:
+    final = tmp_path / "final"
+    summary = render_folder(
+        two_room_folder,
+        views="top",
+        width=32,
+        height=24,
+        compiled=two_room_compiled,
+        recorded_out=final,
+    )
+    manifest = json.loads((two_room_folder / "renders" / "manifest.json").read_text())
+    assert summary.out == manifest["out"] == str(final)

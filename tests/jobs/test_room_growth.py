@@ -9,15 +9,9 @@ from pathlib import Path
 import pytest
 
 import holomj
-from holomj.jobs.generate import (
-    GROWTH,
-    REGROW_SHARE,
-    GenerateOptions,
-    _grow,
-    _why_grow,
-    generate_scene,
-)
-from holomj.layout.room_furnishing import RoomFurniture
+from holomj.compose.house import GROWTH, REGROW_SHARE, grow, why_grow
+from holomj.compose.room_context import RoomFurniture
+from holomj.jobs.generate import GenerateOptions, generate_scene
 from holomj.plan.offline import plan_offline
 
 NURSERY = (
@@ -36,10 +30,10 @@ def test_a_room_grows_for_its_defining_furniture_then_for_its_reach() -> None:
         layout={"reachable_share": 1.0},
         unplaced=[{"object": "bed-0", "stage": "layout", "reason": "does not fit"}],
     )
-    assert _why_grow(room, fine) == ""
-    assert "reachable (75% was)" in _why_grow(room, fenced)
-    assert _why_grow(room, no_bed) == "its bed fits"
-    grown, words = _grow(plan, {room.id: _why_grow(room, fenced)})
+    assert why_grow(room, fine) == ""
+    assert "reachable (75% was)" in why_grow(room, fenced)
+    assert why_grow(room, no_bed) == "its bed fits"
+    grown, words = grow(plan, {room.id: why_grow(room, fenced)})
     assert grown.rooms[0].area_m2 == pytest.approx(round(room.area_m2 * GROWTH, 1))
     assert words.startswith(f"grew {room.id} from {room.area_m2:.1f} to")
 

@@ -13,18 +13,20 @@ import pytest
 from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 
-from holomj.layout.counter_runs import (
+from holomj.compose.house_shell import build_shell
+from holomj.compose.room_assets import retrieve_room
+from holomj.compose.room_context import RoomContext
+from holomj.compose.room_furnishing import furnish_room
+from holomj.layout.counter_run_arrangements import (
     FILLER_MAX_M,
     SHAPES,
     RunModule,
     arrangements,
     leg_ends,
-    requested_shape,
-    solve_counter_run,
 )
+from holomj.layout.counter_runs import solve_counter_run
+from holomj.layout.furniture_rules import object_id
 from holomj.layout.geometry import LAYOUT_MARGIN_M
-from holomj.layout.house_shell import build_shell
-from holomj.layout.room_furnishing import RoomContext, furnish_room, object_id, retrieve_room
 from holomj.layout.room_problem import LayoutDoor, LayoutObject, RoomProblem
 from holomj.layout.solve import solve_room
 from holomj.library.store import AssetLibrary
@@ -51,10 +53,9 @@ def kitchen_plan(
     *,
     windows: int = 0,
     seed: int = 1,
-    description: dict[str, str] | None = None,
+    shape: str | None = None,
 ) -> ScenePlan:
     """A one-room kitchen plan, every object defining and at an edge (as the template has it)."""
-    descriptions = description or {}
     return ScenePlan.model_validate(
         {
             "prompt": "a kitchen",
@@ -72,19 +73,20 @@ def kitchen_plan(
                             "name": name,
                             "category": category,
                             "defining": True,
-                            "description": descriptions.get(name, ""),
                         }
                         for name, category in objects
                     ],
                     "constraints": [f"{name}-0 | edge" for name, _ in objects],
+                    "counter_run_shape": shape,
                 }
             ],
         }
     )
 
 
-def furnish_kitchen(library, size, objects=KITCHEN, *, request="", windows=0, seed=1, **kw):
-    """Plan, shell and furnish one kitchen; the room and its furniture."""
+def furnish_kitchen(library, size, objects=KITCHEN, *, windows=0, seed=1, **kw):
+    """Plan, shell and furnish one kitchen (``shape``: the counter run the plan asks for); the
+    room and its furniture."""
     plan = kitchen_plan(size, objects, windows=windows, seed=seed, **kw)
     shell = build_shell(plan, seed, None)
     context = RoomContext(
@@ -92,7 +94,7 @@ def furnish_kitchen(library, size, objects=KITCHEN, *, request="", windows=0, se
     )
     plan_room, room = plan.rooms[0], shell.rooms[0]
     assets = retrieve_room(plan_room, library, CategoryChooser(library), seed)
-    return room, furnish_room(plan_room, room, context, assets, library, seed, request=request)
+    return room, furnish_room(plan_room, room, context, assets, library, seed)
 
 
 def footprint(obj: SceneObject, size: tuple[float, float, float]) -> Polygon:
@@ -172,7 +174,7 @@ def junction_gap(leg: list[SceneObject], b: SceneObject, sizes: dict[str, tuple]
 
 @pytest.fixture(scope="module")
 def l_kitchen(default_library):
-    return furnish_kitchen(default_library, (3.6, 3.2), request="an L-shaped kitchen", windows=1)
+    return furnish_kitchen(default_library, (3.6, 3.2), shape="L", windows=1)
 
 
 def test_an_l_shaped_kitchen_has_two_legs_meeting_at_a_corner(l_kitchen, default_library):
@@ -218,9 +220,7 @@ def test_no_module_of_a_run_is_a_cooker_or_dishwasher_in_a_corner(l_kitchen, def
 
 
 def test_a_galley_kitchen_has_legs_on_opposite_walls_facing_each_other(default_library):
-    room, furniture = furnish_kitchen(
-        default_library, (2.6, 4.4), request="a galley kitchen", windows=1
-    )
+    room, furniture = furnish_kitchen(default_library, (2.6, 4.4), shape="galley", windows=1)
     record = furniture.layout["counter_run"]
     assert record["shape"] == "galley"
     sizes = sizes_of(default_library, furniture.objects)
@@ -247,9 +247,7 @@ def test_a_galley_kitchen_has_legs_on_opposite_walls_facing_each_other(default_l
 def test_a_u_shaped_kitchen_closes_its_legs_at_both_corners(default_library):
     objects = [*KITCHEN[:4], ("base cabinet", "base_cabinet"), KITCHEN[4]]
     # 3.8 m a side: the two dead corners need the room a 3.25 m square lacks
-    room, furniture = furnish_kitchen(
-        default_library, (3.8, 3.8), objects, request="a U-shaped kitchen"
-    )
+    room, furniture = furnish_kitchen(default_library, (3.8, 3.8), objects, shape="U")
     record = furniture.layout["counter_run"]
     assert record["shape"] == "U", record["tried"]
     sizes = sizes_of(default_library, furniture.objects)
@@ -265,7 +263,7 @@ def test_a_u_shaped_kitchen_closes_its_legs_at_both_corners(default_library):
 
 
 def test_a_u_that_does_not_fit_falls_back_to_an_l(default_library):
-    room, furniture = furnish_kitchen(default_library, (3.6, 3.2), request="a U-shaped kitchen")
+    room, furniture = furnish_kitchen(default_library, (3.6, 3.2), shape="U")
     record = furniture.layout["counter_run"]
     assert record["requested"] == "U"
     assert record["tried"][0]["shape"] == "U" and record["tried"][0]["outcome"]
@@ -415,33 +413,6 @@ def test_leg_ends_name_corners_and_junctions():
         ("junction", "open"),
     )
     assert leg_ends("galley", ()) == (("open", "open"), ("open", "open"))
-
-
-# --------------------------------------------------------------------------- words
-
-
-@pytest.mark.parametrize(
-    ("request_text", "shape"),
-    [
-        ("an L-shaped kitchen", "L"),
-        ("a kitchen laid out in a U shape", "U"),
-        ("a galley kitchen with a window", "galley"),
-        ("a one-wall kitchen", "one_wall"),
-        ("a flat with U-shaped counters", "U"),
-        ("an apartment with an L-shaped living room and a kitchen", None),
-        ("a kitchen", None),
-    ],
-)
-def test_the_requested_shape_is_read_from_the_words(request_text, shape):
-    plan_room = kitchen_plan((3.0, 3.0), KITCHEN).rooms[0]
-    assert requested_shape(plan_room, request_text) == shape
-
-
-def test_the_requested_shape_is_read_from_the_room_itself():
-    plan_room = kitchen_plan(
-        (3.0, 3.0), KITCHEN, description={"kitchen counter": "l shaped kitchen counter"}
-    ).rooms[0]
-    assert requested_shape(plan_room) == "L"
 
 
 # --------------------------------------------------------------------------- end to end

@@ -17,14 +17,9 @@ import pytest
 from shapely.geometry import LineString, Point
 
 from holomj.layout import geometry as geo
-from holomj.layout.desk_grid import (
-    COMPACT,
-    STANDARD,
-    front_lookers,
-    grid_groups,
-    rows_asked,
-    solve_desk_grid,
-)
+from holomj.layout.desk_grid import front_lookers, solve_desk_grid
+from holomj.layout.desk_grid_groups import grid_groups
+from holomj.layout.desk_grid_shapes import COMPACT, STANDARD
 from holomj.layout.open_pockets import reachable_share
 from holomj.layout.room_problem import (
     LayoutDoor,
@@ -135,15 +130,6 @@ def gap(a: tuple[float, ...], b: tuple[float, ...]) -> float:
 # --------------------------------------------------------------------------- detection
 
 
-def test_rows_asked_reads_counts_and_plain_rows() -> None:
-    assert rows_asked(["in 2 rows"]) == (True, 2)
-    assert rows_asked(["twenty computers on desks in four rows"]) == (True, 4)
-    assert rows_asked(["six standing desks in two rows"]) == (True, 2)
-    assert rows_asked(["benches in a row"]) == (True, 1)
-    assert rows_asked(["study tables in rows"]) == (True, None)
-    assert rows_asked(["a rowing machine by the window", "two rows"]) == (False, None)
-
-
 def test_grid_group_pairs_each_desk_with_its_own_chair() -> None:
     problem, categories = classroom((9.5, 8.5))
     groups = grid_groups(problem, categories)
@@ -159,11 +145,19 @@ def test_grid_group_pairs_each_desk_with_its_own_chair() -> None:
 def test_few_desks_make_a_group_only_when_rows_are_asked() -> None:
     problem, categories = classroom((6.0, 5.0), desks=3)
     assert grid_groups(problem, categories) == []
+    desks = PlanObject(name="student desk", category="desk", quantity=3)
     row = PlanRelation(subject="student desk", kind="in_row", phrase="in a row")
-    groups = grid_groups(problem, categories, [row])
-    assert len(groups) == 1 and groups[0].in_row and groups[0].rows_asked == 1
-    asked = grid_groups(problem, categories, request="Three student desks in two rows.")
-    assert len(asked) == 1 and asked[0].rows_asked == 2
+    in_row = PlanRoom(id="classroom", type="classroom", objects=[desks], relations=[row])
+    groups = grid_groups(problem, categories, in_row)
+    assert len(groups) == 1 and groups[0].in_row and groups[0].rows_asked is None
+    in_one_row = in_row.model_copy(update={"objects": [desks.model_copy(update={"rows": 1})]})
+    assert grid_groups(problem, categories, in_one_row)[0].rows_asked == 1
+    for rows, count in ((2, 2), ("any", None)):
+        asked = PlanRoom(
+            id="classroom", type="classroom", objects=[desks.model_copy(update={"rows": rows})]
+        )
+        groups = grid_groups(problem, categories, asked)
+        assert len(groups) == 1 and not groups[0].in_row and groups[0].rows_asked == count
 
 
 def test_only_work_surfaces_make_groups() -> None:

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
+from holomj.layout.layout_result import ConstraintReport, HardChecks, LayoutResult, Placement
 from holomj.layout.relation_room import make_room_for_relations, prompt_relations_held
-from holomj.layout.solve import ConstraintReport, HardChecks, LayoutResult, Placement
 
 
 def _layout(placed: list[str], held: dict[str, bool]) -> LayoutResult:

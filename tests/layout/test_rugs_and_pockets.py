@@ -4,10 +4,11 @@ from __future__ import annotations
 
 from shapely.geometry import Polygon, box
 
+from holomj.layout.hard_rules import hard_checks
 from holomj.layout.open_pockets import ReachMeter, open_pockets, reachable_share
 from holomj.layout.room_problem import PreparedRoom, problem_from_data
 from holomj.layout.rugs import Anchor, RugPose, _footprint, lay_rug, lay_rugs
-from holomj.layout.solve import hard_checks, solve_room
+from holomj.layout.solve import solve_room
 from holomj.layout.solver_greedy import satisfied_weight
 
 

@@ -11,14 +11,11 @@ import numpy as np
 import pytest
 from shapely.geometry import Polygon, box
 
-from holomj.layout.house_shell import build_shell
-from holomj.layout.room_furnishing import (
-    WALL_KINDS,
-    RoomContext,
-    furnish_room,
-    object_id,
-    retrieve_room,
-)
+from holomj.compose.house_shell import build_shell
+from holomj.compose.room_assets import retrieve_room
+from holomj.compose.room_context import RoomContext
+from holomj.compose.room_furnishing import furnish_room
+from holomj.layout.furniture_rules import WALL_KINDS, object_id
 from holomj.layout.wall_faces import FloorItem, WallPlacement
 from holomj.layout.wall_objects import WallObjectRequest, place_wall_objects
 from holomj.layout.window_dressing import (

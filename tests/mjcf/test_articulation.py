@@ -10,8 +10,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from holomj.formats.objects_json import objects_record
 from holomj.jobs.folder import write_scene_folder
+from holomj.jobs.robot_learning import objects_json
 from holomj.library import AssetLibrary
 from holomj.mjcf import compile_scene
 from holomj.spec.scene import SceneSpec
@@ -135,7 +135,7 @@ def test_scene_xml_loads_and_runs_without_warnings(library: AssetLibrary, tmp_pa
 
 def test_objects_json_lists_joints_handles_and_interior_surfaces(library: AssetLibrary) -> None:
     compiled = compile_scene(_kitchen(), library)
-    record = {o["id"]: o for o in objects_record(compiled)["objects"]}
+    record = {o["id"]: o for o in objects_json(compiled)["objects"]}
     dresser = record["dresser"]
     assert dresser["joints"] and dresser["interior_surfaces"]
     first = dresser["joints"][0]
@@ -166,7 +166,7 @@ def test_objects_json_lists_joints_handles_and_interior_surfaces(library: AssetL
         _scene([{"id": "b", "asset": "builtin:box", "position": [1, 1, 0], "room": "room"}]),
         library,
     )
-    (box,) = objects_record(rigid)["objects"]
+    (box,) = objects_json(rigid)["objects"]
     assert box["joints"] == [] and box["interior_surfaces"] == []
 
 

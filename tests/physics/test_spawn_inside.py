@@ -8,15 +8,16 @@ import numpy as np
 import pytest
 from shapely.geometry import Point
 
-from holomj.errors import InputError, SpecError
-from holomj.library import AssetLibrary
-from holomj.mjcf import compile_scene, names
-from holomj.physics.small_object_drops import (
+from holomj.compose.small_objects import (
     InsideRule,
-    drop_small_objects,
+    choose_small_objects,
     inside_rules,
     parse_inside_rules,
 )
+from holomj.errors import InputError, SpecError
+from holomj.library import AssetLibrary
+from holomj.mjcf import compile_scene, names
+from holomj.physics.small_object_drops import drop_small_objects
 from holomj.physics.spawn import populate
 from holomj.physics.surfaces_world import world_interior_surfaces
 from holomj.spec.plan import PlanObject, PlanSmallObject
@@ -145,16 +146,22 @@ def test_the_inside_table_is_read_and_checked(default_library: AssetLibrary) -> 
     assert len(drawn) == 2 and drawn == always.draw(np.random.default_rng(0))
 
 
+def _choose_and_drop(scene, receptacles, library, chooser, seed, inside=False):
+    """What generate does: the small objects chosen (compose), then dropped (physics)."""
+    choices = choose_small_objects(scene, receptacles, library, chooser, seed, inside=inside)
+    return drop_small_objects(scene, choices.drops, library), choices.picks
+
+
 def test_generate_fills_a_fridge_the_plan_put_nothing_on(default_library: AssetLibrary) -> None:
     scene = receptacle_scene("fridge_art_000")
     chooser = CategoryChooser(default_library)
-    without = drop_small_objects(scene, [], default_library, chooser, seed=3)
+    without, _ = _choose_and_drop(scene, [], default_library, chooser, seed=3)
     assert without.requested == 0 and without.scene == scene
-    small = drop_small_objects(scene, [], default_library, chooser, seed=3, inside=True)
+    small, picks = _choose_and_drop(scene, [], default_library, chooser, seed=3, inside=True)
     (record,) = small.receptacles
     assert record["receptacle"] == "rec" and record["placed"] == []
     assert 2 <= small.requested <= 4 and small.inside == len(record["inside"]) >= 1
-    assert all(p["inside"] for p in small.picks)
+    assert picks and all(p["inside"] for p in picks)
 
 
 def test_what_is_planned_on_a_lidded_box_goes_inside_it(default_library: AssetLibrary) -> None:
@@ -164,13 +171,13 @@ def test_what_is_planned_on_a_lidded_box_goes_inside_it(default_library: AssetLi
     toys = PlanSmallObject(name="toy ball", category="toy_ball", quantity=2)
     plan_obj = PlanObject(name="toy box", category="toy_box", on_top=[toys])
     chooser = CategoryChooser(default_library)
-    small = drop_small_objects(scene, [("rec", plan_obj)], default_library, chooser, seed=1)
+    small, _ = _choose_and_drop(scene, [("rec", plan_obj)], default_library, chooser, seed=1)
     (record,) = small.receptacles
     assert record["placed"] == [] and record["failures"] == []
     assert len(record["inside"]) == 2 and small.inside == 2
     # a receptacle with neither a top nor an inside reports them instead of failing
     bare = receptacle_scene("bean_bag_000")
-    none = drop_small_objects(bare, [("rec", plan_obj)], default_library, chooser, seed=1)
+    none, _ = _choose_and_drop(bare, [("rec", plan_obj)], default_library, chooser, seed=1)
     (record,) = none.receptacles
     assert none.requested == 2 and none.placed == 0
     assert all("no surface to put things on" in f["reason"] for f in record["failures"])

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from holomj.plan.knowledge import KnowledgeBase, knowledge_base
+from holomj.plan.knowledge import knowledge_base
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.retrieval.text import TextEncoder
 
 

@@ -14,7 +14,9 @@ from asset_pipeline.procedural.catalog import CATEGORIES
 from holomj.errors import SpecError
 from holomj.layout.constraints import parse_constraint_text
 from holomj.layout.proposals import default_catalogue
-from holomj.plan.knowledge import DEFINING_PRIORITY, SIZE_RANGES, KnowledgeBase, load_knowledge
+from holomj.plan.knowledge import load_knowledge
+from holomj.plan.knowledge_checks import DEFINING_PRIORITY, SIZE_RANGES
+from holomj.plan.knowledge_schema import KnowledgeBase
 
 KNOWLEDGE = Path(str(resources.files("holomj.data").joinpath("knowledge")))
 MATERIAL_WORDS = ("wood", "tile", "marble", "concrete", "carpet", "paint", "brick", "stone",

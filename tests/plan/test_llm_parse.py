@@ -9,9 +9,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from holomj.plan.llm_json import LLMResponseError, extract_json_object
 from holomj.plan.llm_parse import (
-    LLMResponseError,
-    extract_json_object,
     normalise_object_name,
     normalise_room_id,
     parse_constraints,

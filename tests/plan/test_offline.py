@@ -16,7 +16,7 @@ from asset_pipeline.procedural.catalog import CATEGORIES
 from holomj.errors import InputError
 from holomj.layout.constraints import parse_constraint_text
 from holomj.plan.fit import MAX_FLOOR_INSTANCES
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.offline import plan_offline
 from holomj.retrieval.text import TextEncoder
 from holomj.spec.plan import PlanObject, PlanRoom, ScenePlan

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from holomj.plan.knowledge import KnowledgeBase
+from holomj.plan.knowledge_schema import KnowledgeBase
 from holomj.plan.prompt import (
     MANY,
     ParsedPrompt,

@@ -12,14 +12,9 @@ import pytest
 
 from holomj.errors import InputError
 from holomj.library import AssetLibrary
-from holomj.retrieval.assets import (
-    NO_CLIP_NOTE,
-    SIZE_CAP_M,
-    AssetRetriever,
-    RetrievalWeights,
-    retriever_for,
-    size_discrepancy,
-)
+from holomj.retrieval.assets import AssetRetriever, retriever_for
+from holomj.retrieval.ranking import NO_CLIP_NOTE
+from holomj.retrieval.scores import SIZE_CAP_M, RetrievalWeights, size_discrepancy
 from tests.retrieval.conftest import AssetSpec
 
 # Manifest category -> the default library's categories that count as right. Manifest

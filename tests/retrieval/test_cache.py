@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from holomj.retrieval.assets import AssetRetriever, asset_text
+from holomj.retrieval.assets import AssetRetriever
 from holomj.retrieval.cache import EmbeddingCache, cache_file, content_key
+from holomj.retrieval.scores import asset_text
 from tests.retrieval.conftest import AssetSpec, CountingEncoder
 
 SOFA = AssetSpec("sofa_a", "sofa", "a grey three-seat sofa", (0.9, 2.0, 0.8))

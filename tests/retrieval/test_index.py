@@ -17,14 +17,7 @@ import numpy as np
 import pytest
 
 from holomj.library.store import AssetLibrary, LibraryAsset
-from holomj.retrieval.assets import (
-    VARIED_POOL,
-    AssetRetriever,
-    RetrievalWeights,
-    ScoredAsset,
-    asset_text,
-    size_discrepancy,
-)
+from holomj.retrieval.assets import VARIED_POOL, AssetRetriever
 from holomj.retrieval.index import (
     approximate_text_scores,
     exact_text_scores,
@@ -32,6 +25,7 @@ from holomj.retrieval.index import (
     size_discrepancies,
     text_error_bound,
 )
+from holomj.retrieval.scores import RetrievalWeights, ScoredAsset, asset_text, size_discrepancy
 from holomj.spec.assets import AssetMeta
 
 DIM = 48

@@ -12,14 +12,11 @@ from typer.testing import CliRunner
 
 from holomj.cli import app
 from holomj.errors import InputError, SpecError
-from holomj.retrieval.materials import (
+from holomj.retrieval.materials import SURFACES, MaterialLibrary, choose_material, material_picker
+from holomj.retrieval.texture_import import (
     MAX_TEXTURE_PX,
-    SURFACES,
-    MaterialLibrary,
-    choose_material,
     guess_surfaces,
     is_auxiliary_map,
-    material_picker,
     texture_words,
 )
 from holomj.spec.materials import BUILTIN_MATERIALS

@@ -23,8 +23,9 @@ import torch
 from PIL import Image
 
 from holomj.errors import InputError
-from holomj.retrieval.assets import AssetRetriever, RetrievalWeights, retriever_for
+from holomj.retrieval.assets import AssetRetriever, retriever_for
 from holomj.retrieval.cache import cache_file
+from holomj.retrieval.scores import RetrievalWeights
 from holomj.retrieval.visual import (
     CLIP_MEAN,
     CLIP_STD,

@@ -22,6 +22,7 @@ import hashlib
 from pathlib import Path
 
 from asset_pipeline.library_writer import AssetBundle, write_library
+from asset_pipeline.procedural import DEFAULT_LIBRARY_VERSION, default_assets
 from asset_pipeline.procedural.articulated import (  # noqa: F401
     appliances,
     cabinets,
@@ -62,8 +63,6 @@ def in_library(category: str) -> bool:
 
 
 def _version() -> str:
-    from asset_pipeline.procedural import DEFAULT_LIBRARY_VERSION
-
     digest = hashlib.sha256(f"rigid {DEFAULT_LIBRARY_VERSION}\0".encode())
     for path in sorted(Path(__file__).parent.glob("*.py")):
         digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
@@ -98,8 +97,6 @@ def articulated_assets(categories: list[str] | None = None) -> list[AssetBundle]
 def library_assets() -> list[AssetBundle]:
     """The articulated variant of the default library: the default assets with those of every
     category of :data:`LIBRARY_ARTICULATED` replaced by articulated ones."""
-    from asset_pipeline.procedural import default_assets
-
     rigid = [b for b in default_assets() if b.meta.category not in LIBRARY_ARTICULATED]
     return rigid + articulated_assets(sorted(LIBRARY_ARTICULATED))
 

@@ -34,23 +34,25 @@ from asset_pipeline.collider_audit import round_gap
 from asset_pipeline.library_writer import AssetBundle
 from asset_pipeline.procedural.articulated.links import Link, balanced, damped, unwrapped
 from asset_pipeline.procedural.assembly import (
-    CLEARANCE,
-    LICENSE,
     MIN_HULL_VERTICES,
-    PROUD,
-    SOURCE,
     AssetDesign,
-    _check_clearance,
-    _check_inside,
-    _collision_part,
-    _r,
-    _support_surface,
     centred_parts,
     covering_colliders,
     material_visuals,
 )
+from asset_pipeline.procedural.asset_records import (
+    CLEARANCE,
+    LICENSE,
+    PROUD,
+    SOURCE,
+    check_clearance,
+    check_inside,
+    collision_record,
+    meta_round,
+    surface_record,
+)
 from asset_pipeline.procedural.parts import Collider, Mesh, Part, Surface, Vec3
-from holomj.spec.assets import AssetMeta, VisualPart
+from holomj.spec.assets import AssetMeta, CollisionPart, SupportSurface, VisualPart
 from holomj.spec.base import validate_model
 
 CLOSED_GAP = 0.0015  # metres between colliders of different bodies at the closed pose
@@ -91,50 +93,21 @@ def assemble_articulated(design: AssetDesign, expected_size: Vec3 | None = None)
     colliders: dict[str, list[Collider]] = {}
     gap = 0.0
     for key, group in groups.items():
-        colliders[key], found = covering_colliders(group.parts)
-        gap = max(gap, found.distance_m)
-        _check_inside(design.id, colliders[key], low, high)
-    _check_clearance(design.id, [p for p in parts if unwrapped(p)[2] is None])
+        colliders[key], covered = covering_colliders(group.parts)
+        gap = max(gap, covered.distance_m)
+        check_inside(design.id, colliders[key], low, high)
+    check_clearance(design.id, [p for p in parts if unwrapped(p)[2] is None])
     _check_closed_gaps(design.id, groups, colliders)
-    collision: dict[str, list] = {}
-    hull_sizes: list[int] = []
-    for key, found in colliders.items():
-        collision[key] = []
-        prefix = f"{key}_" if key else ""
-        for k, collider in enumerate(found):
-            part, hull = _collision_part(collider, f"{prefix}hull_{k:02d}.obj")
-            if hull is not None:
-                files[part.mesh] = hull[0]  # type: ignore[index]
-                hull_sizes.append(len(hull[1]))
-            collision[key].append(part)
+    collision, hull_sizes = _collision(colliders, files)
+    masses, carcass_mass = _masses(design, groups, collision)
     carcass_volume = sum(c.volume_m3 for c in collision[CARCASS])
-    masses = {
-        key: group.link.density * sum(c.volume_m3 for c in collision[key])
-        for key, group in groups.items()
-        if group.link is not None
-    }
-    moving = sum(masses.values())
-    if moving > MAX_PART_SHARE * design.mass_kg:  # keep the carcass the heavier part
-        masses = {k: m * MAX_PART_SHARE * design.mass_kg / moving for k, m in masses.items()}
-    carcass_mass = design.mass_kg - sum(masses.values())
     for key, group in groups.items():
         if group.link is not None and group.link.joint.balance:  # fit its counterbalance
             link = group.link
             group.link = replace(
                 link, joint=balanced(link.joint, masses[key], _centre(collision[key]))
             )
-    outer = [
-        s
-        for p in parts
-        if unwrapped(p)[1] is None and unwrapped(p)[2] is None
-        for s in p.surfaces()
-    ]
-    stray = [
-        p for p in parts if unwrapped(p)[1] is not None and unwrapped(p)[2] is None and p.surfaces()
-    ]
-    if stray:
-        raise ValueError(f"{design.id}: a moving part has an outer surface; wrap it in Inside")
-    surfaces = sorted((_support_surface(s) for s in outer), key=lambda s: (s.height, s.polygon))
+    surfaces = _outer_surfaces(design.id, parts)
     articulation = {
         "parts": [
             _part_record(group.link, visuals[key], collision[key], masses[key])
@@ -147,7 +120,7 @@ def assemble_articulated(design: AssetDesign, expected_size: Vec3 | None = None)
         "id": design.id,
         "category": design.category,
         "description": design.description,
-        "size": [_r(v) for v in high - low],
+        "size": [meta_round(v) for v in high - low],
         "mass_kg": design.mass_kg,
         "density_kg_m3": round(carcass_mass / carcass_volume, 3),
         "friction": design.friction,
@@ -166,6 +139,59 @@ def assemble_articulated(design: AssetDesign, expected_size: Vec3 | None = None)
     if design.attributes:
         meta["attributes"] = dict(design.attributes)
     return AssetBundle(meta=validate_model(AssetMeta, meta, design.id), files=files)
+
+
+def _collision(
+    colliders: dict[str, list[Collider]], files: dict[str, bytes]
+) -> tuple[dict[str, list[CollisionPart]], list[int]]:
+    """The collision records of every body (hull OBJ files go into ``files``) and the vertex
+    counts of the hulls."""
+    collision: dict[str, list[CollisionPart]] = {}
+    hull_sizes: list[int] = []
+    for key, found in colliders.items():
+        collision[key] = []
+        prefix = f"{key}_" if key else ""
+        for k, collider in enumerate(found):
+            name = f"{prefix}hull_{k:02d}.obj"
+            part, hull = collision_record(collider, name)
+            if hull is not None:
+                files[name] = hull[0]
+                hull_sizes.append(len(hull[1]))
+            collision[key].append(part)
+    return collision, hull_sizes
+
+
+def _masses(
+    design: AssetDesign, groups: dict[str, _Group], collision: dict[str, list[CollisionPart]]
+) -> tuple[dict[str, float], float]:
+    """The mass of every moving body (its link's density times its collision volume, scaled
+    down so that they weigh at most :data:`MAX_PART_SHARE` of the asset) and the carcass's."""
+    masses = {
+        key: group.link.density * sum(c.volume_m3 for c in collision[key])
+        for key, group in groups.items()
+        if group.link is not None
+    }
+    moving = sum(masses.values())
+    if moving > MAX_PART_SHARE * design.mass_kg:  # keep the carcass the heavier part
+        masses = {k: m * MAX_PART_SHARE * design.mass_kg / moving for k, m in masses.items()}
+    return masses, design.mass_kg - sum(masses.values())
+
+
+def _outer_surfaces(asset_id: str, parts: list[Part]) -> list[SupportSurface]:
+    """The outer support surfaces: those of carcass parts not inside it (a moving part with
+    one is an error: wrap it in Inside)."""
+    outer = [
+        s
+        for p in parts
+        if unwrapped(p)[1] is None and unwrapped(p)[2] is None
+        for s in p.surfaces()
+    ]
+    stray = [
+        p for p in parts if unwrapped(p)[1] is not None and unwrapped(p)[2] is None and p.surfaces()
+    ]
+    if stray:
+        raise ValueError(f"{asset_id}: a moving part has an outer surface; wrap it in Inside")
+    return sorted((surface_record(s) for s in outer), key=lambda s: (s.height, s.polygon))
 
 
 def _centre(collision: list) -> Vec3:
@@ -214,15 +240,15 @@ def _part_record(link: Link, visual: list[VisualPart], collision: list, mass: fl
         "joint": {
             "name": link.joint_name,
             "type": joint.type,
-            "axis": [_r(v) for v in joint.axis],
-            "anchor": [_r(v) for v in joint.anchor],
-            "range": [_r(v) for v in joint.range],
+            "axis": [meta_round(v) for v in joint.axis],
+            "anchor": [meta_round(v) for v in joint.anchor],
+            "range": [meta_round(v) for v in joint.range],
             "closed": 0.0,
-            "damping": _r(joint.damping),
-            "frictionloss": _r(joint.frictionloss),
-            "armature": _r(joint.armature),
-            "stiffness": _r(joint.stiffness),
-            "springref": _r(joint.springref),
+            "damping": meta_round(joint.damping),
+            "frictionloss": meta_round(joint.frictionloss),
+            "armature": meta_round(joint.armature),
+            "stiffness": meta_round(joint.stiffness),
+            "springref": meta_round(joint.springref),
         },
         "mass_kg": float(f"{mass:.4g}"),
         "visual": [v.model_dump(mode="json") for v in visual],
@@ -231,10 +257,10 @@ def _part_record(link: Link, visual: list[VisualPart], collision: list, mass: fl
     if link.handle is not None:
         h = link.handle
         record["handle"] = {
-            "pos": [_r(v) for v in h.pos],
-            "quat": [_r(v) for v in h.quat],
-            "pull": [_r(v) for v in h.pull],
-            "length_m": _r(h.length),
+            "pos": [meta_round(v) for v in h.pos],
+            "quat": [meta_round(v) for v in h.quat],
+            "pull": [meta_round(v) for v in h.pull],
+            "length_m": meta_round(h.length),
         }
     return record
 
@@ -260,10 +286,10 @@ def _interior(asset_id: str, parts: Sequence[Part]) -> list[dict]:
                     f"{asset_id}: the interior surface at z = {surface.height:.3f} has only "
                     f"{clearance:.3f} m free above it"
                 )
-            record = _support_surface(surface).model_dump(mode="json")
+            record = surface_record(surface).model_dump(mode="json")
             record["part"] = link.name if link is not None else None
             record["behind"] = [joints[name] for name in behind]
-            record["clearance_m"] = _r(min(clearance, 10.0))
+            record["clearance_m"] = meta_round(min(clearance, 10.0))
             found.append(record)
     found.sort(key=lambda s: (s["part"] or "", s["height"], s["polygon"]))
     return found

@@ -14,7 +14,6 @@ from asset_pipeline.procedural.articulated.kit import (
     PROUD,
     SEAM,
     Cavity,
-    Rng,
     carcass,
     door_pair,
     drawer_stack,
@@ -24,7 +23,7 @@ from asset_pipeline.procedural.articulated.kit import (
 )
 from asset_pipeline.procedural.articulated.links import Link
 from asset_pipeline.procedural.articulated.registry import articulated
-from asset_pipeline.procedural.home_kit import HANDLES, count_word
+from asset_pipeline.procedural.home_kit import HANDLES
 from asset_pipeline.procedural.kit import (
     BLACK_METAL,
     CASE_FINISHES,
@@ -32,9 +31,11 @@ from asset_pipeline.procedural.kit import (
     PAINTED,
     PINE,
     WOODS,
+    Rng,
     block,
     chance,
     clamp,
+    count_word,
     pick,
     square_legs,
     uniform,

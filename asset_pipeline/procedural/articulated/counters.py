@@ -15,14 +15,13 @@ from asset_pipeline.procedural.articulated.kit import (
     GAP,
     PANEL,
     PROUD,
-    Rng,
     carcass,
     door_pair,
     floor_surface,
     joint_names,
 )
 from asset_pipeline.procedural.articulated.registry import articulated
-from asset_pipeline.procedural.home_kit import HANDLES, count_word
+from asset_pipeline.procedural.home_kit import HANDLES
 from asset_pipeline.procedural.kit import (
     BLACK_METAL,
     CHROME,
@@ -30,9 +29,11 @@ from asset_pipeline.procedural.kit import (
     PAINTED,
     PORCELAIN,
     STEEL,
+    Rng,
     block,
     chance,
     clamp,
+    count_word,
     pick,
     uniform,
 )

@@ -14,7 +14,6 @@ from asset_pipeline.procedural.articulated.kit import (
     HANDLE_OUT,
     POST,
     Cavity,
-    Rng,
     floor_surface,
 )
 from asset_pipeline.procedural.articulated.links import (
@@ -37,6 +36,7 @@ from asset_pipeline.procedural.kit import (
     WALNUT,
     WHITE_LACQUER,
     WOODS,
+    Rng,
     block,
     pick,
     uniform,

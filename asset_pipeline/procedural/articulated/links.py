@@ -17,6 +17,7 @@ its closed plane into the carcass.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
@@ -121,14 +122,14 @@ class Moving:
 
     part: Part
     link: Link
-    material: Material = field(default=None)  # type: ignore[assignment]
+    material: Material = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
 
     def __post_init__(self) -> None:
         inner = self.part.material
         if self.material is None:
             object.__setattr__(self, "material", inner)
         elif self.material != inner:
-            object.__setattr__(self, "part", replace(self.part, material=self.material))  # type: ignore[type-var]
+            object.__setattr__(self, "part", replace(self.part, material=self.material))
 
     def mesh(self) -> Mesh | None:
         return self.part.mesh()
@@ -158,14 +159,14 @@ class Inside:
 
     part: Part
     behind: tuple[str, ...]
-    material: Material = field(default=None)  # type: ignore[assignment]
+    material: Material = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
 
     def __post_init__(self) -> None:
         inner = self.part.material
         if self.material is None:
             object.__setattr__(self, "material", inner)
         elif self.material != inner:
-            object.__setattr__(self, "part", replace(self.part, material=self.material))  # type: ignore[type-var]
+            object.__setattr__(self, "part", replace(self.part, material=self.material))
 
     def mesh(self) -> Mesh | None:
         return self.part.mesh()
@@ -200,15 +201,15 @@ def unwrapped(part: Part) -> tuple[Part, Link | None, tuple[str, ...] | None]:
             behind = part.behind
         elif not isinstance(part, Tagged):
             return part, link, behind
-        part = part.part  # type: ignore[attr-defined]
+        part = part.part
 
 
-def moving(link: Link, parts: list[Part]) -> list[Part]:
+def moving(link: Link, parts: Sequence[Part]) -> list[Part]:
     """``parts`` as parts of ``link``."""
     return [Moving(p, link) for p in parts]
 
 
-def inside(behind: tuple[str, ...], parts: list[Part]) -> list[Part]:
+def inside(behind: tuple[str, ...], parts: Sequence[Part]) -> list[Part]:
     """``parts`` whose surfaces are inside, reached through the links ``behind``."""
     return [Inside(p, behind) for p in parts]
 
@@ -341,6 +342,6 @@ def frame_quat(x_axis: Vec3, z_axis: Vec3) -> Vec4:
     else:
         s = 2.0 * math.sqrt(1.0 + m[2, 2] - m[0, 0] - m[1, 1])
         q = ((m[1, 0] - m[0, 1]) / s, (m[0, 2] + m[2, 0]) / s, (m[1, 2] + m[2, 1]) / s, 0.25 * s)
-    if q[0] < 0:
-        q = tuple(-v for v in q)  # type: ignore[assignment]
-    return tuple(round(float(v), 9) + 0.0 for v in q)  # type: ignore[return-value]
+    sign = -1.0 if q[0] < 0 else 1.0
+    qw, qx, qy, qz = (round(float(sign * v), 9) + 0.0 for v in q)
+    return (qw, qx, qy, qz)

@@ -9,7 +9,8 @@ where the children wait parked:
    child was authored above its parent (a bookshelf's shelf), else the nearest one;
 2. the spot: the child's own x/y when its footprint (at its own yaw) fits on that surface, else
    the closest point where it fits, then spots around it on rings of growing radius and on a
-   grid over the whole surface (closest to the authored x/y first), then the same on the
+   grid over the whole surface (the closest to the authored x/y first, then spots spread
+   evenly over the rest of the surface), then the same on the
    parent's other surfaces; a footprint that fits
    nowhere is tried turned by 90°, and finally at the closest point on the surface;
 3. each spot is rejected at once when the child would collide there (when it collides with its
@@ -64,6 +65,7 @@ GRID_M = 0.05  # then a grid over the whole surface, at least this fine
 MAX_GRID = 400  # ... and at most this many points
 MIN_SPACING_M = 0.02  # spots closer than this to an earlier one are skipped
 SPOTS_PER_SURFACE = 30
+NEAREST_SPOTS = 18  # of which the nearest to the authored x/y; the others spread over the rest
 HOLD_DAMPING = 1e6  # N·s/m on the joint of a static child held still in the drop world
 
 
@@ -223,7 +225,7 @@ def _drop_one(
     tilted = obj.quat is not None and abs(_tilt_deg(obj.quat)) > 1.0
     base_quat = np.array(obj.quat if tilted and obj.quat is not None else yaw_quat(yaw))
     wanted = parent.position[2] + child.height_above_parent
-    rec_body = world.bodies[parent.id].body
+    rec_bodies = _subtree(world.model, world.bodies[parent.id].body)
     before = {oid: world.pose(oid)[0] for oid in placed}
     world.activate(obj.id)
     drops = 0
@@ -245,7 +247,7 @@ def _drop_one(
             continue
         drops += 1
         upright = meta.upright and not tilted
-        judge = functools.partial(_judge, world, surface, rec_body, upright, before)
+        judge = functools.partial(_judge, world, surface, rec_bodies, upright, before)
         [(outcome, reason)] = world.drop(
             obj.id, [state], nstep, watch=[], judge=judge, floor_z=surface.world.height - 0.5
         )
@@ -263,7 +265,7 @@ def _drop_one(
         result.reason = "placed"
         result.surface_index = surface.world.index
         result.position = (round(px, 6), round(py, 6), round(pz + lift, 6))
-        result.quat = tuple(round(float(v), 8) for v in q)  # type: ignore[assignment]
+        result.quat = _quat4(q)
         return result
     if child.static and _hold_still(world, obj.id, target, base_quat, parent.id, bottom, result):
         return result
@@ -298,9 +300,14 @@ def _hold_still(
     result.accepted = True
     result.reason = "held still above its parent (static)"
     result.static_hold = True
-    result.position = tuple(round(float(v), 6) for v in pos)  # type: ignore[assignment]
-    result.quat = tuple(round(float(v), 8) for v in quat)  # type: ignore[assignment]
+    result.position = (round(float(pos[0]), 6), round(float(pos[1]), 6), round(float(pos[2]), 6))
+    result.quat = _quat4(quat)
     return True
+
+
+def _quat4(quat: np.ndarray) -> tuple[float, float, float, float]:
+    w, x, y, z = (round(float(v), 8) for v in quat)
+    return (w, x, y, z)
 
 
 def _top(world: DropWorld, object_id: str) -> float:
@@ -312,6 +319,14 @@ def _top(world: DropWorld, object_id: str) -> float:
     geoms = world.bodies[object_id].geoms
     body = world.bodies[object_id].body
     return float(high[geoms, 2].max()) if geoms.size else float(data.xpos[body][2])
+
+
+def _subtree(model: mujoco.MjModel, body: int) -> frozenset[int]:
+    """``body`` and the bodies under it (an articulated receptacle's lid, doors, drawers)."""
+    root = int(model.body_rootid[body])
+    return frozenset(
+        b for b in range(model.nbody) if int(model.body_rootid[b]) == root and b >= body
+    )
 
 
 def _owner_label(geom_name: str) -> str:
@@ -404,7 +419,14 @@ def _fitting_spots(
             candidates.append((float(gx), float(gy)))
     fitting = [c for c in candidates if fits(*c)]
     fitting.sort(key=lambda c: math.hypot(c[0] - target[0], c[1] - target[1]))
-    return _spread(fitting)[:SPOTS_PER_SURFACE]
+    spots = _spread(fitting)
+    if len(spots) <= SPOTS_PER_SURFACE:
+        return spots
+    # the nearest spots first, then spots spread over the rest of the surface (a crowded
+    # corner must not hide the free end of a long dresser)
+    near, far = spots[:NEAREST_SPOTS], spots[NEAREST_SPOTS:]
+    step = len(far) / (SPOTS_PER_SURFACE - NEAREST_SPOTS)
+    return near + [far[int(k * step)] for k in range(SPOTS_PER_SURFACE - NEAREST_SPOTS)]
 
 
 def _spread(spots: list[tuple[float, float]]) -> list[tuple[float, float]]:
@@ -434,7 +456,7 @@ def _tilt_deg(quat: tuple[float, float, float, float]) -> float:
 def _judge(
     world: DropWorld,
     surface: Surface,
-    rec_body: int,
+    rec_bodies: frozenset[int],
     upright: bool,
     before: dict[str, np.ndarray],
     _candidate: int,
@@ -451,7 +473,7 @@ def _judge(
     xy = Point(float(outcome.position[0]), float(outcome.position[1]))
     if not surface.world.polygon.contains(xy):
         return "off the surface"
-    if rec_body not in outcome.touches:
+    if not rec_bodies & outcome.touches:
         return "not resting on its receptacle"
     if outcome.touches & {world.bodies[object_id].body for object_id in before}:
         return "leans on another object"

@@ -38,21 +38,28 @@ from pathlib import Path
 from typing import Any
 
 import mujoco
-import numpy as np
 
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.mjcf.objects import Furniture, is_furniture
-from holomj.physics.audit import AuditResult, Rooms, audit
+from holomj.physics.audit import Rooms, audit
 from holomj.physics.drop_world import DropWorld
 from holomj.physics.repair import add_settled_key, bake, moves, separate
 from holomj.physics.scene_io import LoadedScene, loaded_from_compiled
-from holomj.physics.settle import run_validation
+from holomj.physics.settle import Validation, run_validation
 from holomj.physics.spawn import PARK_HEIGHT_M
 from holomj.physics.standing.drops import Child, Dropped, drop_children
 from holomj.physics.standing.prepass import prepare
 from holomj.physics.standing.pushes import StandPushes
+from holomj.physics.standing.records import (
+    move_reasons,
+    penetrations,
+    reassigned,
+    separations,
+    validation_summary,
+)
+from holomj.spec.assets import AssetMeta
 from holomj.spec.report import RepairAction, StabilityReport, Thresholds, Unsaved
 from holomj.spec.scene import SceneObject, SceneSpec
 
@@ -60,7 +67,6 @@ MAX_MOVE_M = 0.5  # overlaps needing a longer move are not separated: their obje
 PARK_SPACING_M = 3.0
 SLIGHT_MOVE_M = 0.001  # settling moves below this (and SLIGHT_TURN_DEG) are only counted
 SLIGHT_TURN_DEG = 0.5
-FLOOR = "floor"  # the support of an object that stands on the floor, in the report
 TILT_DEG = 1.0  # a dropped object tilted less than this is written with a yaw only
 
 Recompile = Callable[[SceneSpec, Furniture], CompiledScene]
@@ -129,7 +135,7 @@ class StandOutcome:
             "unsaved": [{"object": u.name, "why": u.why} for u in self.unsaved],
             "penetrations_before": self.before,
             "penetrations_after": self.after,
-            "validation": None if report is None else _validation_summary(report),
+            "validation": None if report is None else validation_summary(report),
             "stand_seconds": {k: round(v, 3) for k, v in self.seconds.items()},
         }
 
@@ -151,10 +157,6 @@ def make_stand(
     th = opts.thresholds
     clock = _Clock()
     metas = {o.id: library.get(o.asset).meta for o in scene.objects}
-
-    def furniture(obj: SceneObject) -> bool:
-        return is_furniture(obj, metas[obj.id])
-
     rooms = Rooms(scene, 0.0).polygons
 
     # 1. every object gets a free joint where it can (children are dropped with one)
@@ -185,33 +187,12 @@ def make_stand(
         at_first, th, max_move_m=opts.max_move_m, push_rule=pushes, fixed=child_ids
     )
     _pose_model(compiled.model, second.objects, loaded.objects)
-    separated = _separations(first, second, why_separated, pushes.walls)
+    separated = separations(first, second, why_separated, pushes.walls)
     clock.lap("separate")
 
     # 4. drop the children
-    imported = {o.id: o for o in scene.objects}
-    now = {o.id: o.position for o in second.objects}
-    jobs = []
-    for obj in children:
-        parent = imported[str(obj.support)]
-        dx, dy = (now[parent.id][k] - parent.position[k] for k in (0, 1))
-        if parent.id in child_ids:  # moves with its parent when that one lands
-            dx = dy = 0.0
-        x, y, z = imported[obj.id].position
-        update = {"support": obj.support, "position": (x + dx, y + dy, z)}
-        jobs.append(
-            Child(
-                imported[obj.id].model_copy(update=update),
-                parent.id,
-                z - parent.position[2],
-                static=imported[obj.id].static,
-            )
-        )
-    world = DropWorld(compiled, sorted(child_ids), nthread=1)
-    try:
-        drops = drop_children(world, jobs, {o.id: o for o in second.objects}, metas)
-    finally:
-        world.close()
+    jobs = _child_jobs(scene, second, children, child_ids)
+    drops = _drop(compiled, jobs, second, metas)
     clock.lap("drops")
 
     # 5. settle, holding still (parked) what is already lost and what rests on it
@@ -219,17 +200,7 @@ def make_stand(
     lost = {u.name: u.why for u in unsaved_separated}
     lost.update({oid: d.reason for oid, d in drops.items() if not d.accepted})
     lost.update(_resting_on(placed_scene.objects, set(lost)))
-    settle_scene = _rebuilt(
-        placed_scene,
-        [
-            o.model_copy(update={"static": o.id in lost or (o.static and not furniture(o))})
-            for o in _parked(placed_scene.objects, set(lost), scene)
-        ],
-    )
-    settle_compiled = compile_scene(settle_scene, library, furniture="as-is")
-    settling = run_validation(
-        loaded_from_compiled(settle_compiled, library, Path(source)), th, "free", opts.sleep
-    )
+    settle_compiled, settling = _settle(placed_scene, scene, lost, library, metas, opts, source)
     baked, unstable = bake(placed_scene, settling, keep=set(lost))
     unsaved = [Unsaved(name=k, why=v) for k, v in lost.items()]
     unsaved += [
@@ -241,49 +212,130 @@ def make_stand(
 
     # 6. write back with the settled keyframe, and validate
     final = recompile(baked, "as-is")
-    skip = {u.name for u in unsaved}
-    add_settled_key(final, settle_compiled.model, settling.result.data, skip=skip)
-    report = None
-    if validate_unsaved or not unsaved:
-        checked = recompile(baked, "free")
-        report = run_validation(
-            loaded_from_compiled(checked, library, Path(source)), th, "free", False
-        ).report
-        known = {u.name for u in unsaved}
-        unsaved += [
-            Unsaved(name=o.name, why="once settled: " + "; ".join(o.reasons))
-            for o in report.objects
-            if not o.stable and o.name not in known
-        ]
-        after = _penetrations(report.penetrations)
-    else:
-        found = audit(
-            loaded_from_compiled(final, library, Path(source)),
-            tolerance=th.tolerance_m,
-            room_margin=th.room_margin_m,
-        )
-        after = _penetrations(found.penetrations)
+    add_settled_key(
+        final, settle_compiled.model, settling.result.data, skip={u.name for u in unsaved}
+    )
+    report, after = _final_check(
+        final, baked, recompile, library, (th, Path(source)), unsaved,
+        validate_unsaved or not unsaved,
+    )  # fmt: skip
     clock.lap("validate")
 
-    reasons = _reasons(prepared.reasons, separated, drops)
-    moved = moves(scene, baked, reasons)
+    moved = moves(scene, baked, move_reasons(prepared.reasons, separated, drops))
     settled_only = [a for a in moved if a.why == "settled" and _slight(a)]
     return StandOutcome(
         compiled=final,
         report=report,
         moved=[a for a in moved if a not in settled_only],
-        settled={
-            "objects": len(settled_only),
-            "max_m": round(max((a.moved_m for a in settled_only), default=0.0), 6),
-        },
+        settled=_settled_summary(settled_only),
         dropped=[drops[o.id] for o in children],
         separated=separated,
-        reassigned=_reassigned(scene, baked, prepared.reasons),
+        reassigned=reassigned(scene, baked, prepared.reasons),
         unsaved=sorted(unsaved, key=lambda u: u.name),
-        before=_penetrations(before.penetrations, before),
+        before=penetrations(before.penetrations, before),
         after=after,
         seconds=clock.laps,
     )
+
+
+def _drop(
+    compiled: CompiledScene, jobs: list[Child], second: SceneSpec, metas: dict[str, AssetMeta]
+) -> dict[str, Dropped]:
+    """Every child dropped onto its parent, in a drop world of the compiled scene."""
+    world = DropWorld(compiled, sorted(j.obj.id for j in jobs), nthread=1)
+    try:
+        return drop_children(world, jobs, {o.id: o for o in second.objects}, metas)
+    finally:
+        world.close()
+
+
+def _settle(
+    placed: SceneSpec,
+    scene: SceneSpec,
+    lost: dict[str, str],
+    library: AssetLibrary,
+    metas: dict[str, AssetMeta],
+    opts: StandOptions,
+    source: Path | str,
+) -> tuple[CompiledScene, Validation]:
+    """Settle the placed scene with furniture free, holding still (parked) what is lost and
+    static props; the compiled scene and the validation run."""
+    objects = [
+        o.model_copy(
+            update={"static": o.id in lost or (o.static and not is_furniture(o, metas[o.id]))}
+        )
+        for o in _parked(placed.objects, set(lost), scene)
+    ]
+    compiled = compile_scene(_rebuilt(placed, objects), library, furniture="as-is")
+    loaded = loaded_from_compiled(compiled, library, Path(source))
+    return compiled, run_validation(loaded, opts.thresholds, "free", opts.sleep)
+
+
+def _settled_summary(settled_only: list[RepairAction]) -> dict[str, Any]:
+    """How many objects settling alone moved slightly, and the most."""
+    return {
+        "objects": len(settled_only),
+        "max_m": round(max((a.moved_m for a in settled_only), default=0.0), 6),
+    }
+
+
+def _child_jobs(
+    scene: SceneSpec, second: SceneSpec, children: list[SceneObject], child_ids: set[str]
+) -> list[Child]:
+    """One drop per child: at its imported pose moved as its parent was (a child of a child
+    moves with its parent when that one lands), at its authored height above its parent."""
+    imported = {o.id: o for o in scene.objects}
+    now = {o.id: o.position for o in second.objects}
+    jobs = []
+    for obj in children:
+        parent = imported[str(obj.support)]
+        dx, dy = (now[parent.id][k] - parent.position[k] for k in (0, 1))
+        if parent.id in child_ids:
+            dx = dy = 0.0
+        x, y, z = imported[obj.id].position
+        update = {"support": obj.support, "position": (x + dx, y + dy, z)}
+        jobs.append(
+            Child(
+                imported[obj.id].model_copy(update=update),
+                parent.id,
+                z - parent.position[2],
+                static=imported[obj.id].static,
+            )
+        )
+    return jobs
+
+
+def _final_check(
+    final: CompiledScene,
+    baked: SceneSpec,
+    recompile: Recompile,
+    library: AssetLibrary,
+    context: tuple[Thresholds, Path],
+    unsaved: list[Unsaved],
+    validate: bool,
+) -> tuple[StabilityReport | None, dict[str, Any]]:
+    """Validate the written scene as ``holomj validate`` does (furniture free), adding to
+    ``unsaved`` what does not stand once settled; without ``validate``, only audit it. The
+    report (None when not validated) and the penetrations after."""
+    th, source = context
+    if not validate:
+        found = audit(
+            loaded_from_compiled(final, library, source),
+            tolerance=th.tolerance_m,
+            room_margin=th.room_margin_m,
+        )
+        return None, penetrations(found.penetrations)
+    checked = recompile(baked, "free")
+    report = run_validation(
+        loaded_from_compiled(checked, library, source), th, "free", False
+    ).report
+    known = {u.name for u in unsaved}
+    unsaved += [
+        Unsaved(name=o.name, why="once settled: " + "; ".join(o.reasons))
+        for o in report.objects
+        if not o.stable and o.name not in known
+    ]
+    return report, penetrations(report.penetrations)
 
 
 def _slight(action: RepairAction) -> bool:
@@ -349,30 +401,6 @@ def _pose_model(model: mujoco.MjModel, objects: list[SceneObject], bodies: dict[
             model.body_quat[body] = quat
 
 
-def _separations(
-    first: SceneSpec, second: SceneSpec, why: dict[str, str], walls: dict[str, str]
-) -> list[dict[str, Any]]:
-    """One record per object ``separate`` moved: from what, and by how much."""
-    before = {o.id: np.array(o.position) for o in first.objects}
-    records = []
-    for obj in second.objects:
-        if obj.id not in why:
-            continue
-        delta = np.array(obj.position) - before[obj.id]
-        other = why[obj.id].removeprefix("separated from ")
-        if obj.id in walls:
-            other = walls[obj.id]
-        records.append(
-            {
-                "object": obj.id,
-                "from": other,
-                "moved_m": round(float(np.linalg.norm(delta)), 4),
-                "translation": [round(float(v), 4) for v in delta],
-            }
-        )
-    return records
-
-
 def _after_drops(
     scene: SceneSpec,
     separated: SceneSpec,
@@ -430,64 +458,3 @@ def _resting_on(objects: list[SceneObject], lost: set[str]) -> dict[str, str]:
                 result[obj.id] = f"rests on {obj.support}, which could not be saved"
                 changed = True
     return result
-
-
-def _reasons(
-    prepared: dict[str, list[str]], separated: list[dict[str, Any]], drops: dict[str, Dropped]
-) -> dict[str, str]:
-    reasons = {k: [r for r in v if not r.startswith("assigned")] for k, v in prepared.items()}
-    for record in separated:
-        text = f"moved {record['moved_m'] * 1000:.0f} mm clear of {record['from']}"
-        reasons.setdefault(record["object"], []).append(text)
-    for object_id, drop in drops.items():
-        if drop.accepted:
-            reasons.setdefault(object_id, []).append(
-                f"dropped onto {drop.onto}"
-                + (f" {drop.offset_m * 1000:.0f} mm from its x/y" if drop.offset_m >= 5e-4 else "")
-            )
-    return {k: "; ".join(v) for k, v in reasons.items() if v}
-
-
-def _reassigned(
-    scene: SceneSpec, final: SceneSpec, notes: dict[str, list[str]]
-) -> list[dict[str, str]]:
-    imported = {o.id: o for o in scene.objects}
-    records = []
-    for obj in final.objects:
-        old = imported[obj.id]
-        for name, prefixes in (
-            ("support", ("rests on", "stands on the floor")),
-            ("room", ("assigned", "pulled")),
-        ):
-            value = getattr(obj, name)
-            if value != getattr(old, name):
-                why = next((n for n in notes.get(obj.id, []) if n.startswith(prefixes)), "")
-                shown = value if value is not None else FLOOR
-                records.append({"object": obj.id, "field": name, "value": shown, "why": why})
-    return records
-
-
-def _penetrations(pairs: list, found: AuditResult | None = None) -> dict[str, Any]:
-    record: dict[str, Any] = {
-        "count": len(pairs),
-        "max_m": round(max((p.depth_m for p in pairs), default=0.0), 6),
-    }
-    if found is not None:
-        record["below_floor"] = len(found.below_floor)
-        record["outside_rooms"] = len(found.outside_rooms)
-    return record
-
-
-def _validation_summary(report: StabilityReport) -> dict[str, Any]:
-    counts = report.counts
-    return {
-        "ok": report.ok,
-        "objects": counts.get("objects", 0),
-        "stable": counts.get("stable", 0),
-        "unstable": counts.get("unstable", 0),
-        "static": counts.get("static", 0),
-        "penetrations": counts.get("penetrations", 0),
-        "max_penetration_m": report.max_penetration_m,
-        "warnings": dict(report.warnings),
-        "furniture": report.furniture,
-    }

@@ -6,14 +6,11 @@ import pytest
 from shapely import affinity
 from shapely.geometry import Polygon, box
 
-from holomj.layout.house_shell import build_shell
-from holomj.layout.room_furnishing import (
-    FIXED_CATEGORIES,
-    RoomContext,
-    furnish_room,
-    object_id,
-    retrieve_room,
-)
+from holomj.compose.house_shell import build_shell
+from holomj.compose.room_assets import retrieve_room
+from holomj.compose.room_context import RoomContext
+from holomj.compose.room_furnishing import furnish_room
+from holomj.layout.furniture_rules import FIXED_CATEGORIES, object_id
 from holomj.spec.scene import SceneSpec
 from tests.layout.choosers import CategoryChooser
 from tests.layout.plans import two_room_plan

@@ -13,7 +13,12 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from holomj.layout.door_window_placement import WindowRequest, place_doors, place_windows
+from holomj.layout.door_window_placement import (
+    WindowKind,
+    WindowRequest,
+    place_doors,
+    place_windows,
+)
 from holomj.layout.floorplan import RoomRequest, plan_floor
 from holomj.seeds import stage_rng
 from holomj.spec.materials import Material
@@ -90,7 +95,7 @@ def _windows(
         for r in plan.rooms
         if r.windows.count is not None
     }
-    by_kind: dict[str | None, set[str]] = {}
+    by_kind: dict[WindowKind | None, set[str]] = {}
     for r in plan.rooms:
         if r.windows.count is None:
             by_kind.setdefault(r.windows.kind, set()).add(r.id)
@@ -102,7 +107,7 @@ def _windows(
             rooms,
             doors,
             stage_rng(seed, "windows", kind or "default"),
-            kind=kind,  # type: ignore[arg-type]
+            kind=kind,
             wall_height=plan.wall_height,
             report=missed,
         )

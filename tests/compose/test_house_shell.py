@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from shapely.geometry import Polygon
 
+from holomj.compose.house_shell import build_shell, room_request
 from holomj.layout.door_window_placement import reachable
-from holomj.layout.house_shell import build_shell, room_request
 from holomj.spec.materials import Material
 from holomj.spec.plan import PlanRoom
 from holomj.spec.scene import SceneSpec

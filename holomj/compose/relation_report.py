@@ -13,7 +13,7 @@ import math
 from collections.abc import Iterable, Sequence
 from typing import Any
 
-from holomj.layout.room_furnishing import object_id
+from holomj.layout.furniture_rules import object_id
 from holomj.library.store import AssetLibrary
 from holomj.spec.plan import PlanRelation, ScenePlan, instance_name
 from holomj.spec.scene import SceneObject, SceneSpec

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
-from holomj.jobs.scene_reader import Scene as _SceneReader
+from holomj.jobs.scene_reader import Scene as Scene  # holomj.Scene: a scene folder, loaded
 from holomj.library.store import AssetLibrary as _StoreLibrary
 
 if TYPE_CHECKING:
@@ -23,7 +23,6 @@ if TYPE_CHECKING:
     from holomj.jobs.populate import PopulateResult
     from holomj.jobs.refine import RefineResult
     from holomj.jobs.stage_log import Listener
-    from holomj.spec.edit import EditReport
     from holomj.spec.report import StabilityReport
 
 
@@ -41,8 +40,6 @@ class AssetLibrary(_StoreLibrary):
 def _library_root(library: Path | str | AssetLibrary | None) -> Path:
     from holomj.jobs.library import resolve_library
 
-    if isinstance(library, _StoreLibrary):
-        return library.root
     return resolve_library(library)
 
 
@@ -251,54 +248,6 @@ def export(
     return export_folder(
         Path(folder), format, Path(out) if out is not None else None, colliders=colliders
     )
-
-
-class Scene(_SceneReader):
-    """A holomj scene folder, loaded (re-exported as ``holomj.Scene``): ``Scene.load(folder)``
-    or ``Scene.open(folder)``; ``.objects``, ``.rooms``, ``.report``, ``.model()``, and
-    ``.edit(ops)``."""
-
-    @classmethod
-    def open(cls, folder: Path | str) -> Scene:
-        """Load the scene folder ``folder`` (as :meth:`load`)."""
-        return cls.load(folder)
-
-    def edit(
-        self,
-        ops: Path | str | Sequence[Any],
-        out: Path | str | None = None,
-        *,
-        seed: int = 0,
-        library: Path | str | AssetLibrary | None = None,
-        overwrite: bool = False,
-        validate: bool = True,
-    ) -> EditReport:
-        """``holomj edit``: apply edit operations (a JSON file, or a list of operations as
-        dicts or :mod:`holomj.spec.edit` models) and write the result into ``out`` (a new
-        folder), or back into this folder, which this object then shows.
-
-        Returns the :class:`~holomj.spec.edit.EditReport` (``.ok``, ``.operations`` with each
-        one's ``status`` and ``reason``, ``.added``, ``.removed``, ``.moved``,
-        ``.validation``). Raises :class:`~holomj.errors.InputError` for a malformed operations
-        list (nothing is written) and :class:`~holomj.errors.OutputExistsError` when ``out``
-        exists (without ``overwrite``); refused operations are in the report, not raised.
-        """
-        from holomj.jobs.edit import apply_edits
-
-        report = apply_edits(
-            self.folder,
-            ops,
-            out,
-            seed=seed,
-            library_path=_library_root(library),
-            overwrite=overwrite,
-            validate=validate,
-        )
-        if out is None or Path(out).resolve() == Path(self.folder).resolve():
-            fresh = type(self).load(self.folder)
-            self.spec, self.library = fresh.spec, fresh.library
-            self.__dict__.pop("objects", None)  # the cached object list
-        return report
 
 
 def eval(

@@ -145,11 +145,11 @@ class LocalEngine:
             return
         now = time.monotonic()
         timeout = max(0.0, min(s.deadline(self.timeout_s) for s in busy) - now)
-        handles: list[object] = []
+        handles: list[Connection | int] = []
         for slot in busy:
             assert slot.conn is not None and slot.process is not None
             handles += [slot.conn, slot.process.sentinel]
-        wait(handles, timeout=timeout)  # type: ignore[arg-type]
+        wait(handles, timeout=timeout)
 
     def _collect(self, slot: _Slot, out_dir: Path) -> JobResult | None:
         """The result of ``slot``'s job if it has ended (answered, died or timed out)."""

@@ -35,52 +35,63 @@ ERROR_WIDTH = 80
 JOB_WIDTH = 40
 
 
+JobsFileArg = Annotated[
+    Path,
+    typer.Argument(
+        metavar="INPUT",
+        help="Jobs file: one prompt or house JSON path (relative to the file) per line; "
+        "blank lines and # comments are ignored.",
+    ),
+]
+BatchFolderOption = Annotated[
+    Path, typer.Option("--out", "-o", help="Batch folder: one sub-folder per job.")
+]
+WorkersOption = Annotated[
+    int, typer.Option("--workers", "-w", min=1, max=1024, help="Jobs run at once.")
+]
+RayOption = Annotated[
+    str | None,
+    typer.Option(
+        "--ray",
+        metavar="ADDRESS",
+        help="Run the jobs as Ray tasks: local (start one here), auto (join 'ray start'), "
+        "or ray://HOST:PORT. Needs the ray extra: pip install 'holomj\\[ray]'.",
+    ),
+]
+SeedsOption = Annotated[
+    str | None,
+    typer.Option(
+        "--seeds",
+        metavar="A:B",
+        help="Run every prompt with each seed in [A, B) (default 0:1); house files run once.",
+    ),
+]
+TimeoutOption = Annotated[
+    float, typer.Option("--timeout", min=1.0, help="Seconds per job before it is killed.")
+]
+MaxJobsPerWorkerOption = Annotated[
+    int,
+    typer.Option(
+        "--max-jobs-per-worker",
+        min=0,
+        help="Local engine: replace a worker after N jobs (0: never; 1: a fresh process "
+        "per job, ~10 s slower per job).",
+    ),
+]
+
+
 def batch_command(
-    jobs_file: Annotated[
-        Path,
-        typer.Argument(
-            metavar="INPUT",
-            help="Jobs file: one prompt or house JSON path (relative to the file) per line; "
-            "blank lines and # comments are ignored.",
-        ),
-    ],
-    out: Annotated[Path, typer.Option("--out", "-o", help="Batch folder: one sub-folder per job.")],
-    workers: Annotated[
-        int, typer.Option("--workers", "-w", min=1, max=1024, help="Jobs run at once.")
-    ] = 1,
-    ray: Annotated[
-        str | None,
-        typer.Option(
-            "--ray",
-            metavar="ADDRESS",
-            help="Run the jobs as Ray tasks: local (start one here), auto (join 'ray start'), "
-            "or ray://HOST:PORT. Needs the ray extra: pip install 'holomj\\[ray]'.",
-        ),
-    ] = None,
-    seeds: Annotated[
-        str | None,
-        typer.Option(
-            "--seeds",
-            metavar="A:B",
-            help="Run every prompt with each seed in [A, B) (default 0:1); house files run once.",
-        ),
-    ] = None,
-    timeout: Annotated[
-        float, typer.Option("--timeout", min=1.0, help="Seconds per job before it is killed.")
-    ] = 600.0,
+    jobs_file: JobsFileArg,
+    out: BatchFolderOption,
+    workers: WorkersOption = 1,
+    ray: RayOption = None,
+    seeds: SeedsOption = None,
+    timeout: TimeoutOption = 600.0,
     library: LibraryOption = None,
     planner: PlannerOption = "offline",
     render: RenderOption = False,
     text_model: TextModelOption = None,
-    max_jobs_per_worker: Annotated[
-        int,
-        typer.Option(
-            "--max-jobs-per-worker",
-            min=0,
-            help="Local engine: replace a worker after N jobs (0: never; 1: a fresh process "
-            "per job, ~10 s slower per job).",
-        ),
-    ] = 0,
+    max_jobs_per_worker: MaxJobsPerWorkerOption = 0,
     strict: StrictOption = False,
     as_json: JsonOption = False,
     quiet: QuietOption = False,

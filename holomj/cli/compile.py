@@ -10,7 +10,7 @@ OUT is untouched), 1 for a failure of ours, and when objects could not be made t
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from rich.markup import escape
@@ -27,6 +27,9 @@ from holomj.cli.options import (
 )
 from holomj.cli.output import emit_json, guard, library_root, out_console, spinner
 from holomj.importers.detect import FORMATS
+
+if TYPE_CHECKING:
+    from holomj.jobs.compile import CompileReport
 
 InputArgument = Annotated[
     Path,
@@ -132,34 +135,38 @@ def compile_command(
     if as_json:
         emit_json(report.to_dict())
     elif not quiet:
-        scene, model = report.scene, report.model
-        out_console.print(
-            f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
-        )
-        out_console.print(
-            f"  {len(scene['rooms'])} rooms, {scene['walls']} walls, {scene['doors']} doors, "
-            f"{scene['windows']} windows, {scene['objects']} objects; "
-            f"{model['bodies']} bodies, {model['geoms']} geoms, {model['total_mass_kg']} kg"
-        )
-        if report.robot is not None:
-            x, y, _ = report.robot["position"]
-            out_console.print(
-                f"  robot {report.robot['name']} at ({x:.2f}, {y:.2f}), yaw "
-                f"{report.robot['yaw_deg']:.1f}°, in {report.robot['room']}"
-            )
-        if report.stand is not None:
-            _print_stand(report.stand)
-        if report.substitutions:
-            out_console.print(
-                f"  {len(report.substitutions)} assets substituted (see import_report.json)"
-            )
-        for warning in report.warnings:
-            out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
-        if report.sim_warnings:
-            out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
+        _print_report(report)
 
 
-def _print_stand(stand: dict) -> None:
+def _print_report(report: CompileReport) -> None:
+    """What was compiled: counts, the robot, making it stand, substitutions and warnings."""
+    scene, model, robot = report.scene, report.model, report.robot
+    out_console.print(
+        f"[bold green]compiled[/] {report.input} ({report.format}) -> {report.output}/scene.xml"
+    )
+    out_console.print(
+        f"  {len(scene.rooms)} rooms, {scene.walls} walls, {scene.doors} doors, "
+        f"{scene.windows} windows, {scene.objects} objects; "
+        f"{model.bodies} bodies, {model.geoms} geoms, {model.total_mass_kg} kg"
+    )
+    if robot is not None:
+        x, y, _ = robot.position
+        out_console.print(
+            f"  robot {robot.name} at ({x:.2f}, {y:.2f}), yaw {robot.yaw_deg:.1f}°, in {robot.room}"
+        )
+    if report.stand is not None:
+        _print_stand(report.stand)
+    if report.substitutions:
+        out_console.print(
+            f"  {len(report.substitutions)} assets substituted (see import_report.json)"
+        )
+    for warning in report.warnings:
+        out_console.print(f"  [yellow]warning:[/] {warning}", markup=True)
+    if report.sim_warnings:
+        out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
+
+
+def _print_stand(stand: dict[str, Any]) -> None:
     """What making the scene stand changed, and the verdict."""
     before, after = stand["penetrations_before"], stand["penetrations_after"]
     out_console.print(
@@ -182,7 +189,7 @@ def _print_stand(stand: dict) -> None:
         out_console.print(f"    {row['object']}: {row['why']}", markup=False)
 
 
-def _print_kept(stand: dict) -> None:
+def _print_kept(stand: dict[str, Any]) -> None:
     """The objects moved to another receptacle or left out, and the share kept."""
     relocated, left = stand.get("relocated", []), stand.get("left_out", [])
     if not relocated and not left:

@@ -15,23 +15,23 @@ def info_command(folder: FolderArg, as_json: JsonOption = False) -> None:
 
     summary = guard(lambda: folder_summary(folder))
     if as_json:
-        emit_json(summary)
+        emit_json(summary.to_dict())
         return
-    table = Table(title=f"{summary['name']} ({summary['folder']})")
+    scene, model = summary.scene, summary.model
+    table = Table(title=f"{scene.name} ({summary.folder})")
     table.add_column("room")
     table.add_column("type")
     table.add_column("area m²", justify="right")
-    for room in summary["rooms"]:
-        table.add_row(room["id"], room["type"], f"{room['area_m2']:.2f}")
+    for room in scene.rooms:
+        table.add_row(room.id, room.type, f"{room.area_m2:.2f}")
     out_console.print(table)
-    model = summary["model"]
     out_console.print(
-        f"walls {summary['walls']}, doors {summary['doors']}, windows {summary['windows']}, "
-        f"objects {summary['objects']} ({summary['dynamic_objects']} dynamic, "
-        f"{summary['static_objects']} static), lights {summary['lights']}"
+        f"walls {scene.walls}, doors {scene.doors}, windows {scene.windows}, "
+        f"objects {scene.objects} ({scene.dynamic_objects} dynamic, "
+        f"{scene.static_objects} static), lights {summary.lights}"
     )
     out_console.print(
-        f"bodies {model['bodies']}, geoms {model['geoms']}, joints {model['joints']} "
-        f"({model['free_joints']} free, {model['hinges']} hinges), meshes {model['meshes']}, "
-        f"mass {model['total_mass_kg']} kg"
+        f"bodies {model.bodies}, geoms {model.geoms}, joints {model.joints} "
+        f"({model.free_joints} free, {model.hinges} hinges), meshes {model.meshes}, "
+        f"mass {model.total_mass_kg} kg"
     )

@@ -8,7 +8,7 @@ jobs, so that the command line and the Python API reject them with the same one-
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -125,3 +125,11 @@ LlmKeyOption = Annotated[
 LlmConfigOption = Annotated[
     Path | None, typer.Option("--llm-config", help="TOML file with an [llm] table.")
 ]
+
+
+def llm_settings(
+    base_url: str | None, model: str | None, api_key: str | None, config_file: Path | None
+) -> dict[str, Any]:
+    """The ``--llm-*`` options as the jobs take them (None: from the environment and
+    ``$HOLOMJ_HOME/config.toml``)."""
+    return {"base_url": base_url, "model": model, "api_key": api_key, "config_file": config_file}

@@ -15,7 +15,7 @@ best scene found and refine.json are written all the same), 2 for bad input.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
@@ -30,65 +30,73 @@ from holomj.cli.options import (
     PlannerOption,
     QuietOption,
     SeedOption,
+    llm_settings,
 )
 from holomj.cli.output import emit_json, err_console, guard, library_root, out_console
+
+if TYPE_CHECKING:
+    from holomj.jobs.refine import RefineResult
+
+
+InstructionOption = Annotated[
+    str,
+    typer.Option(
+        "--instruction",
+        "-i",
+        help="What to change, in words: 'add a reading corner with an armchair and a "
+        "floor lamp by the window'.",
+    ),
+]
+RoundsOption = Annotated[int, typer.Option("--rounds", min=1, max=20, help="At most this many.")]
+NewFolderOption = Annotated[
+    Path | None,
+    typer.Option(
+        "--out", "-o", metavar="NEW", help="Write the refined scene here (default: into OUT)."
+    ),
+]
+MaxOpsOption = Annotated[
+    int, typer.Option("--max-ops", min=1, max=50, help="Edit operations per round.")
+]
+ImagesOption = Annotated[
+    bool,
+    typer.Option(
+        "--images/--no-images",
+        help="Send the rendered views to the LLM (--no-images: text only; also "
+        "HOLOMJ_LLM_IMAGES=0).",
+    ),
+]
+RenderViewsOption = Annotated[
+    bool, typer.Option("--render/--no-render", help="Render views each round.")
+]
+RefineJsonOption = Annotated[bool, typer.Option("--json", help="Print refine.json on stdout.")]
 
 
 def refine_command(
     scene: FolderArg,
-    instruction: Annotated[
-        str,
-        typer.Option(
-            "--instruction",
-            "-i",
-            help="What to change, in words: 'add a reading corner with an armchair and a "
-            "floor lamp by the window'.",
-        ),
-    ],
-    rounds: Annotated[int, typer.Option("--rounds", min=1, max=20, help="At most this many.")] = 3,
+    instruction: InstructionOption,
+    rounds: RoundsOption = 3,
     planner: PlannerOption = "offline",
-    out: Annotated[
-        Path | None,
-        typer.Option(
-            "--out", "-o", metavar="NEW", help="Write the refined scene here (default: into OUT)."
-        ),
-    ] = None,
+    out: NewFolderOption = None,
     overwrite: OverwriteOption = False,
     seed: SeedOption = 0,
     library: LibraryOption = None,
-    max_ops: Annotated[
-        int, typer.Option("--max-ops", min=1, max=50, help="Edit operations per round.")
-    ] = 8,
-    images: Annotated[
-        bool,
-        typer.Option(
-            "--images/--no-images",
-            help="Send the rendered views to the LLM (--no-images: text only; also "
-            "HOLOMJ_LLM_IMAGES=0).",
-        ),
-    ] = True,
-    render: Annotated[
-        bool, typer.Option("--render/--no-render", help="Render views each round.")
-    ] = True,
+    max_ops: MaxOpsOption = 8,
+    images: ImagesOption = True,
+    render: RenderViewsOption = True,
     llm_base_url: LlmUrlOption = None,
     llm_model: LlmModelOption = None,
     llm_api_key: LlmKeyOption = None,
     llm_config: LlmConfigOption = None,
-    as_json: Annotated[bool, typer.Option("--json", help="Print refine.json on stdout.")] = False,
+    as_json: RefineJsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
     """Refine a scene by an instruction: render, plan edits, apply, score, keep what helps."""
     from holomj.jobs.folder import require_scene_folder
-    from holomj.jobs.refine import REFINE_JSON, refine
+    from holomj.jobs.refine import refine
 
     guard(lambda: require_scene_folder(scene, "holomj generate' or 'holomj compile"))
     library_path = library_root(library)
-    settings = {
-        "base_url": llm_base_url,
-        "model": llm_model,
-        "api_key": llm_api_key,
-        "config_file": llm_config,
-    }
+    settings = llm_settings(llm_base_url, llm_model, llm_api_key, llm_config)
     verbose = not quiet and not as_json
 
     def say(line: str) -> None:
@@ -100,7 +108,7 @@ def refine_command(
             scene,
             instruction,
             rounds=rounds,
-            planner=planner,  # type: ignore[arg-type]
+            planner=planner,  # type: ignore[arg-type]  # refine checks the name and says so
             out=out,
             overwrite=overwrite,
             seed=seed,
@@ -115,17 +123,24 @@ def refine_command(
     if as_json:
         emit_json(result.record)
     elif not quiet:
-        colour = "green" if result.ok else "yellow"
-        met = sum(1 for c in result.checks if c["held"])
-        out_console.print(
-            f"[bold {colour}]refined[/] -> {result.folder}: score {result.score_before:.3f} -> "
-            f"{result.score_after:.3f}, {result.kept}/{len(result.rounds)} round(s) kept, "
-            f"instruction {met}/{len(result.checks)} checks met, "
-            f"{'validated' if result.valid else 'NOT validated'} "
-            f"({result.seconds_per_round:.1f} s per round; see {REFINE_JSON})"
-        )
-        for check in result.checks:
-            if not check["held"]:
-                out_console.print(f"  not met: {check['what']}: {check['reason']}", markup=False)
+        _print_result(result)
     if not result.ok:
         raise typer.Exit(code=1)
+
+
+def _print_result(result: RefineResult) -> None:
+    """The scores before and after, the rounds kept and the checks not met."""
+    from holomj.jobs.refine import REFINE_JSON
+
+    colour = "green" if result.ok else "yellow"
+    met = sum(1 for c in result.checks if c["held"])
+    out_console.print(
+        f"[bold {colour}]refined[/] -> {result.folder}: score {result.score_before:.3f} -> "
+        f"{result.score_after:.3f}, {result.kept}/{len(result.rounds)} round(s) kept, "
+        f"instruction {met}/{len(result.checks)} checks met, "
+        f"{'validated' if result.valid else 'NOT validated'} "
+        f"({result.seconds_per_round:.1f} s per round; see {REFINE_JSON})"
+    )
+    for check in result.checks:
+        if not check["held"]:
+            out_console.print(f"  not met: {check['what']}: {check['reason']}", markup=False)

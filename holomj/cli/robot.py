@@ -53,7 +53,7 @@ def add_robot_command(
             seed=seed,
             clearance=clearance,
             room=room,
-            profile=profile,  # type: ignore[arg-type]
+            profile=profile,
             replace=replace,
         )
     )

@@ -82,7 +82,7 @@ def validate_command(
             lambda: validate(
                 scene,
                 thresholds=thresholds,
-                furniture=furniture,  # type: ignore[arg-type]
+                furniture=furniture,
                 sleep=sleep,
                 repair=repair,
             )
@@ -160,8 +160,8 @@ def print_summary(report: StabilityReport) -> None:
             f"  [cyan]repaired[/] {action.name}: moved {action.moved_m * 1000:.1f} mm, "
             f"{action.rotation_deg:.2f}° ({action.why})"
         )
-    for item in report.unsaved:
-        out_console.print(f"  [yellow]unsaved[/] {item.name}: {item.why}")
+    for unsaved in report.unsaved:
+        out_console.print(f"  [yellow]unsaved[/] {unsaved.name}: {unsaved.why}")
     if report.warnings:
         out_console.print(f"  [red]MuJoCo warnings:[/] {report.warnings}")
     verdict = "[bold green]ok[/]" if report.ok else "[bold red]not ok[/]"

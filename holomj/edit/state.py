@@ -16,7 +16,7 @@ import numpy as np
 
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene
-from holomj.physics.spawn import merge_libraries
+from holomj.physics.spawn_requests import merge_libraries
 from holomj.seeds import stage_rng
 from holomj.spec.scene import SceneObject, SceneSpec
 

@@ -43,7 +43,7 @@ from holomj.formats.model_geometry import (
 )
 from holomj.mjcf import names
 from holomj.spec.robot import ROBOT_PREFIX
-from holomj.spec.scene import SceneSpec
+from holomj.spec.scene import Door, SceneSpec, Window
 from holomj.version import __version__
 
 # glTF is Y-up: the root node turns MuJoCo's Z-up world by -90 degrees about X, (x, y, z) ->
@@ -107,7 +107,9 @@ class GlbScene:
         )
         self._mesh_cache: dict[tuple, int] = {}
         self.objects = {names.object_body(o.id): o for o in scene.objects}
-        self.openings = {o.id: ("door", o) for o in scene.doors}
+        self.openings: dict[str, tuple[str, Door | Window]] = {
+            o.id: ("door", o) for o in scene.doors
+        }
         self.openings.update({o.id: ("window", o) for o in scene.windows})
         self.leaves = {
             names.door_leaf_body(door.id, index): door.id
@@ -387,7 +389,7 @@ def _quat_xyzw(wxyz: np.ndarray) -> list[float]:
     return [_r(x), _r(y), _r(z), _r(w)]
 
 
-def _vec(values: Sequence[float]) -> list[float]:
+def _vec(values: Sequence[float] | np.ndarray) -> list[float]:
     return [_r(v) for v in values]
 
 
@@ -429,18 +431,18 @@ class _Document:
         for look_name in sorted(prims.parts):
             look, parts = prims.parts[look_name]
             tris = Triangles.concat(parts)
-            textured = look.texture is not None and tris.uvs is not None
+            uvs = tris.uvs if look.texture is not None else None
             attributes = {
                 "POSITION": self._accessor(tris.positions, "VEC3", with_bounds=True),
                 "NORMAL": self._accessor(tris.normals, "VEC3"),
             }
-            if textured:
-                attributes["TEXCOORD_0"] = self._accessor(tris.uvs, "VEC2")
+            if uvs is not None:
+                attributes["TEXCOORD_0"] = self._accessor(uvs, "VEC2")
             primitives.append(
                 {
                     "attributes": attributes,
                     "indices": self._indices(tris.faces),
-                    "material": self._material(look, textured),
+                    "material": self._material(look, uvs is not None),
                     "mode": 4,
                 }
             )
@@ -457,8 +459,8 @@ class _Document:
             "metallicFactor": 0.0,
             "roughnessFactor": look.roughness,
         }
-        if textured:
-            pbr["baseColorTexture"] = {"index": self._texture(int(look.texture))}
+        if textured and look.texture is not None:
+            pbr["baseColorTexture"] = {"index": self._texture(look.texture)}
         material: dict[str, Any] = {"name": key, "pbrMetallicRoughness": pbr, "doubleSided": True}
         if rgba[3] < 1.0:
             material["alphaMode"] = "BLEND"

@@ -62,7 +62,9 @@ class Triangles:
         return Triangles(
             np.vstack([p.positions for p in parts]).astype(np.float32),
             np.vstack([p.normals for p in parts]).astype(np.float32),
-            np.vstack([p.uvs for p in parts]).astype(np.float32) if with_uv else None,
+            np.vstack([p.uvs for p in parts if p.uvs is not None]).astype(np.float32)
+            if with_uv
+            else None,
             np.vstack([p.faces + o for p, o in zip(parts, offsets)]).astype(np.uint32),
         )
 
@@ -88,7 +90,8 @@ class Look:
     @property
     def linear_rgba(self) -> tuple[float, float, float, float]:
         """The colour as glTF and USD want it: linear RGB (sRGB decoded), alpha as is."""
-        return (*(round(srgb_to_linear(c), 6) for c in self.rgba[:3]), self.rgba[3])
+        red, green, blue = (round(srgb_to_linear(c), 6) for c in self.rgba[:3])
+        return (red, green, blue, self.rgba[3])
 
 
 def srgb_to_linear(value: float) -> float:
@@ -188,11 +191,12 @@ class ModelGeometry:
 
     def rgba(self, geom: int) -> tuple[float, float, float, float]:
         model = self.model
-        own = tuple(float(v) for v in model.geom_rgba[geom])
+        rgba = model.geom_rgba[geom]
         material = int(model.geom_matid[geom])
-        if material >= 0 and np.allclose(own, _DEFAULT_GEOM_RGBA):
-            return tuple(float(v) for v in model.mat_rgba[material])  # type: ignore[return-value]
-        return own  # type: ignore[return-value]
+        if material >= 0 and np.allclose(rgba, _DEFAULT_GEOM_RGBA):
+            rgba = model.mat_rgba[material]
+        red, green, blue, alpha = (float(v) for v in rgba)
+        return (red, green, blue, alpha)
 
     def look(self, geom: int) -> Look:
         model = self.model
@@ -253,8 +257,8 @@ class ModelGeometry:
         model = self.model
         kind = int(model.geom_type[geom])
         size = tuple(round(float(v), 7) for v in model.geom_size[geom])
-        key = (kind, int(model.geom_dataid[geom]) if kind == mujoco.mjtGeom.mjGEOM_MESH else size)
-        key = (*key, round(repeat[0], 6), round(repeat[1], 6))
+        shape = int(model.geom_dataid[geom]) if kind == mujoco.mjtGeom.mjGEOM_MESH else size
+        key = (kind, shape, round(repeat[0], 6), round(repeat[1], 6))
         if key not in self._shapes:
             self._shapes[key] = self._make_triangles(geom, kind, repeat)
         return self._shapes[key]
@@ -337,7 +341,10 @@ def box_triangles(
 ) -> Triangles:
     """A box of half-sizes ``half``, four vertices per face, each face's texture coordinates
     spanning ``repeat`` tiles (MuJoCo's mapping of a 2D texture onto a box)."""
-    positions, normals, uvs, tris = [], [], [], []
+    positions: list[np.ndarray] = []
+    normals: list[np.ndarray] = []
+    uvs: list[tuple[float, float]] = []
+    tris: list[tuple[int, int, int]] = []
     for name in faces:
         axis, sign, u_axis, v_axis = _BOX_FACES[name]
         base = len(positions)
@@ -431,7 +438,9 @@ def matrix_to_quat_wxyz(rotation: np.ndarray) -> np.ndarray:
     return quat
 
 
-def quat_from_to(source: Sequence[float], target: Sequence[float]) -> np.ndarray:
+def quat_from_to(
+    source: Sequence[float] | np.ndarray, target: Sequence[float] | np.ndarray
+) -> np.ndarray:
     """The shortest rotation (w, x, y, z) taking direction ``source`` onto ``target``."""
     a = np.asarray(source, dtype=float) / np.linalg.norm(source)
     b = np.asarray(target, dtype=float)

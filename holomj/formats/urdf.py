@@ -31,6 +31,7 @@ import mujoco
 import numpy as np
 
 from holomj.formats.model_geometry import ModelGeometry, Triangles
+from holomj.formats.welded_bodies import welded, welded_inertia
 from holomj.mjcf import names
 from holomj.spec.scene import SceneSpec
 from holomj.version import __version__
@@ -323,51 +324,17 @@ def _link_tree(
     """The contents of link ``link`` (frame ``link_pos``, ``link_rot`` in the world): ``body``
     and the bodies welded to it; then the jointed children below it."""
     geo = writer.geo
-    members = _welded(geo, body)
+    members = welded(geo, body)
     geoms = []
     for member in members:
         for geom in geo.body_geoms(member):
             gpos, grot = geo.geom_pose(geom)
             geoms.append((geom, link_rot.T @ (gpos - link_pos), link_rot.T @ grot))
-    writer.link(link, geoms, _inertial(geo, members, link_pos, link_rot))
+    writer.link(link, geoms, welded_inertia(geo, members, link_pos, link_rot))
     for member in members:
         for child in geo.children[member]:
             if geo.model.body_jntnum[child]:
                 _subtree(writer, child, link, link_pos, link_rot)
-
-
-def _welded(geo: ModelGeometry, body: int) -> list[int]:
-    out = [body]
-    for child in geo.children[body]:
-        if not geo.model.body_jntnum[child]:
-            out += _welded(geo, child)
-    return out
-
-
-def _inertial(
-    geo: ModelGeometry, members: list[int], link_pos: np.ndarray, link_rot: np.ndarray
-) -> tuple[float, np.ndarray, np.ndarray, np.ndarray] | None:
-    """Mass, centre, principal inertia and axes (matrix) of ``members`` in the link frame."""
-    model, data = geo.model, geo.data
-    masses = np.array([float(model.body_mass[m]) for m in members])
-    total = float(masses.sum())
-    if total <= 0:
-        return None
-    centres = np.array([link_rot.T @ (data.xipos[m] - link_pos) for m in members])
-    centre = (masses[:, None] * centres).sum(axis=0) / total
-    if len(members) == 1:
-        axes = link_rot.T @ data.ximat[members[0]].reshape(3, 3)
-        return total, centre, np.asarray(model.body_inertia[members[0]], dtype=float), axes
-    tensor = np.zeros((3, 3))
-    for index, member in enumerate(members):
-        irot = link_rot.T @ data.ximat[member].reshape(3, 3)
-        offset = centres[index] - centre
-        tensor += irot @ np.diag(model.body_inertia[member]) @ irot.T
-        tensor += masses[index] * (np.dot(offset, offset) * np.eye(3) - np.outer(offset, offset))
-    values, vectors = np.linalg.eigh(tensor)
-    if np.linalg.det(vectors) < 0:
-        vectors[:, 2] *= -1
-    return total, centre, values, vectors
 
 
 def _origin(parent: ET.Element, pos: np.ndarray, rot: np.ndarray) -> None:

@@ -20,7 +20,7 @@ from holomj.jobs.folder import (
     require_scene_folder,
     write_scene_folder,
 )
-from holomj.mjcf.compiler import Profile, compile_scene
+from holomj.mjcf.compiler import check_profile, compile_scene
 from holomj.physics.smoke import simulate
 from holomj.robots.attach import add_robot
 from holomj.robots.placement import DEFAULT_CLEARANCE_M
@@ -46,7 +46,7 @@ def add_robot_to_folder(
     seed: int = 0,
     clearance: float | None = None,
     room: str | None = None,
-    profile: Profile = "default",
+    profile: str = "default",
     replace: bool = False,
 ) -> AddRobotResult:
     """Attach the robot ``spec`` to the scene folder ``folder`` (see the module docstring).
@@ -65,7 +65,9 @@ def add_robot_to_folder(
             where=str(folder),
             fix="pass --replace to put the new robot in its place",
         )
-    compiled = compile_scene(read_scene(folder), open_library(folder), profile=profile)
+    compiled = compile_scene(
+        read_scene(folder), open_library(folder), profile=check_profile(profile)
+    )
     compiled = add_robot(compiled, spec, stage_rng(seed, "robot"), clearance=clearance, room=room)
     warnings = simulate(compiled.model, SMOKE_SECONDS).warnings
     write_scene_folder(compiled, prepared, keep_from=folder)

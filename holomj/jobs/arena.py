@@ -49,7 +49,7 @@ def escape_name(name: str) -> str:
 class HolomjArena(composer.Arena):
     """The scene of a holomj folder as a composer Arena (robot included when it has one)."""
 
-    def _build(self, folder: Path | str, name: str | None = None) -> None:  # type: ignore[override]
+    def _build(self, folder: Path | str, name: str | None = None) -> None:
         """Load ``folder/scene.xml``; ``name`` overrides the model name."""
         folder = Path(folder)
         xml = folder / SCENE_XML

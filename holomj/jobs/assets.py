@@ -11,14 +11,16 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal, cast, get_args
 
 from holomj.errors import InputError
 from holomj.jobs.library import resolve_library
 from holomj.library.store import AssetLibrary, normalise_category
 
-UP_AXES = ("y", "z")
-FRONTS = ("+x", "-x", "+y", "-y")
+UpAxis = Literal["y", "z"]
+Front = Literal["+x", "-x", "+y", "-y"]
+UP_AXES: tuple[str, ...] = get_args(UpAxis)
+FRONTS: tuple[str, ...] = get_args(Front)
 
 
 @dataclass(frozen=True)
@@ -150,8 +152,8 @@ def _import_options(
         size=size,
         description=description,
         mass_kg=mass_kg,
-        up_axis=up,
-        front=front,
+        up_axis=cast(UpAxis | None, up),  # checked against UP_AXES above
+        front=cast(Front, front),  # checked against FRONTS above
         coacd=coacd,
     )
 

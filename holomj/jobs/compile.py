@@ -23,6 +23,7 @@ its objects, one that leaves any object out with ``strict``, one that still does
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import time
 from dataclasses import dataclass, field
@@ -31,7 +32,7 @@ from typing import Any
 
 from holomj.errors import HolomjError
 from holomj.file_names import IMPORT_REPORT, REPORT_JSON
-from holomj.formats.summaries import model_summary, scene_summary
+from holomj.formats.summaries import ModelSummary, SceneSummary, model_summary, scene_summary
 from holomj.importers.result import ImportResult
 from holomj.jobs.folder import prepare_output, write_scene_folder
 from holomj.library.store import AssetLibrary
@@ -40,6 +41,7 @@ from holomj.mjcf.objects import Furniture
 from holomj.physics.smoke import simulate
 from holomj.physics.standing.keep import KeptHouse, make_stand_keeping
 from holomj.spec.report import StabilityReport
+from holomj.spec.robot import RobotRecord
 from holomj.spec.scene import SceneSpec
 
 FIXED_FORMATS = ("procthor", "holodeck", "scenedef")  # made to stand unless fix=False
@@ -51,6 +53,16 @@ class SceneUnstableError(HolomjError):
     """Objects of an imported scene could not be made to stand. Exit code 1."""
 
 
+@dataclass(frozen=True)
+class RobotSpot:
+    """The robot a compile attached: its name, where its base stands, its heading and room."""
+
+    name: str
+    position: list[float]
+    yaw_deg: float
+    room: str | None
+
+
 @dataclass
 class CompileReport:
     """What ``compile_file`` did, for people (``summary``) and scripts (``to_dict``)."""
@@ -58,13 +70,13 @@ class CompileReport:
     input: str
     output: str
     format: str
-    scene: dict[str, Any]
-    model: dict[str, Any]
+    scene: SceneSummary
+    model: ModelSummary
     substitutions: list[dict[str, Any]]
     warnings: list[str]
     sim_warnings: dict[str, int]
     timings_s: dict[str, float] = field(default_factory=dict)
-    robot: dict[str, Any] | None = None
+    robot: RobotSpot | None = None
     stand: dict[str, Any] | None = None  # what making it stand changed (None: not run)
     merged: list[dict[str, str]] = field(default_factory=list)  # fixtures of a stand-in
 
@@ -75,7 +87,13 @@ class CompileReport:
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-able form."""
-        return dict(self.__dict__)
+        robot = None if self.robot is None else dataclasses.asdict(self.robot)
+        return {
+            **self.__dict__,
+            "scene": self.scene.to_dict(),
+            "model": self.model.to_dict(),
+            "robot": robot,
+        }
 
 
 def compile_file(
@@ -323,13 +341,8 @@ def _verdict(report: StabilityReport | None) -> str:
     return f"{report.counts.get('penetrations', 0)} penetrations, warnings {report.warnings}"
 
 
-def _robot_summary(record: Any) -> dict[str, Any] | None:
+def _robot_summary(record: RobotRecord | None) -> RobotSpot | None:
     """Name, spot and room of the attached robot (None without one)."""
     if record is None:
         return None
-    return {
-        "name": record.name,
-        "position": list(record.position),
-        "yaw_deg": record.yaw_deg,
-        "room": record.room,
-    }
+    return RobotSpot(record.name, list(record.position), record.yaw_deg, record.room)

@@ -124,7 +124,11 @@ def _target(
                 "--prompt differs from the prompt of the folder's plan.json; measured "
                 "against plan.json"
             )
-        against = {"source": PLAN_JSON, "prompt": plan.prompt, "planner": plan.planner}
+        against: dict[str, Any] = {
+            "source": PLAN_JSON,
+            "prompt": plan.prompt,
+            "planner": plan.planner,
+        }
         return spec_from_plan(plan, vocab, own=True), against, notes
     if prompt is not None:
         from holomj.jobs.plan import PlanOptions, plan_scene

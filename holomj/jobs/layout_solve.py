@@ -10,13 +10,15 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal, cast
 
 from holomj.errors import InputError
 
 if TYPE_CHECKING:
     from holomj.layout.room_problem import RoomProblem
     from holomj.layout.solve import LayoutResult
+
+Solver = Literal["cpsat", "greedy"]  # holomj.layout.solve.SOLVERS
 
 
 @dataclass(frozen=True)
@@ -56,7 +58,7 @@ def solve_layout_file(
     problem = load_problem(input_path)
     result = solve_room(
         problem,
-        solver=solver,  # type: ignore[arg-type]
+        solver=cast(Solver, solver),  # checked against SOLVERS above
         time_limit_s=time_limit_s,
         rng=seed_rng(seed),
     )

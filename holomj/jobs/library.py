@@ -13,8 +13,9 @@ from holomj.file_names import LIBRARY_INDEX
 from holomj.library.store import AssetLibrary
 
 
-def resolve_library(path: Path | str | None, create: bool = False) -> Path:
-    """The root of the library to use: ``path``, or the default library (built on first use).
+def resolve_library(path: Path | str | AssetLibrary | None, create: bool = False) -> Path:
+    """The root of the library to use: ``path`` (or an open library's root), or the default
+    library (built on first use).
 
     With ``create``, an empty library is made at ``path`` when it holds none yet (for imports
     into a new library). Raises :class:`~holomj.errors.HolomjError` when the default library
@@ -24,6 +25,8 @@ def resolve_library(path: Path | str | None, create: bool = False) -> Path:
         from asset_pipeline.default_library import ensure_default_library
 
         return Path(ensure_default_library())
+    if isinstance(path, AssetLibrary):
+        return path.root
     path = Path(path)
     if create and not (path / LIBRARY_INDEX).exists():
         from asset_pipeline.library_writer import write_library

@@ -11,14 +11,16 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from holomj.errors import InputError
 from holomj.jobs.assets import AssetImport
 from holomj.jobs.library import resolve_library
 from holomj.library.store import AssetLibrary
+from holomj.spec.choices import one_of
 
-COLLIDER_MODES = ("shipped", "coacd")
+ColliderMode = Literal["shipped", "coacd"]
+COLLIDER_MODES: tuple[ColliderMode, ...] = ("shipped", "coacd")
 
 
 def parse_uids(text: str | Sequence[str] | None) -> list[str] | None:
@@ -59,7 +61,8 @@ def import_objathor(
     from asset_pipeline.objathor import plan_objathor
     from asset_pipeline.objathor_import import ObjathorOptions, run_objathor_imports
 
-    if colliders not in COLLIDER_MODES:
+    mode = one_of(colliders, COLLIDER_MODES)
+    if mode is None:
         raise InputError(
             f"unknown collider source {colliders!r}",
             where="--colliders",
@@ -68,7 +71,7 @@ def import_objathor(
     coacd = coacd_params(
         preset, threshold=threshold, max_convex_hull=max_hulls, timeout_s=timeout_s
     )
-    options = ObjathorOptions(colliders=colliders, coacd=coacd)  # type: ignore[arg-type]
+    options = ObjathorOptions(colliders=mode, coacd=coacd)
     jobs = plan_objathor(directory, uids)  # checked before anything is written
     root = resolve_library(library, create=True)
     held = set(AssetLibrary.open(root).ids())

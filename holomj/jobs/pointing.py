@@ -24,23 +24,17 @@ the pointed spot, with the model's tokens, images and seconds.
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-from shapely.geometry import MultiPolygon, Point, Polygon
-
 from holomj.errors import HolomjError, InputError
-from holomj.library.store import AssetLibrary, LibraryAsset
+from holomj.jobs.pointed_drop import drop_at
+from holomj.library.store import AssetLibrary
 from holomj.plan.llm_json import LLMResponseError
 from holomj.spec.scene import SceneSpec
-
-CROP_MARGINS_M = (0.03, 0.08)
-TINY = ((0.0, 0.0), (1e-4, 0.0), (0.0, 1e-4))
 
 
 @dataclass
@@ -74,7 +68,7 @@ def populate_by_pointing(
 ) -> PointingOutcome:
     """Name, point and drop up to ``count`` objects (see the module docstring)."""
     from holomj.edit.state import EditContext
-    from holomj.physics.spawn import find_object
+    from holomj.physics.spawn_requests import find_object
     from holomj.physics.surfaces_world import world_surfaces
 
     synthesiser = None
@@ -140,12 +134,22 @@ class _Pointer:
 
     def one(self, outcome: PointingOutcome, number: int) -> bool:
         """Name, point at and drop object ``number``; False when pointing should stop."""
-        from holomj.mjcf.compiler import compile_scene
-        from holomj.physics.spawn import find_object
-        from holomj.physics.surfaces_world import world_surfaces
-        from holomj.refinement import pointing
-
         start = time.perf_counter()
+        look = self._look(outcome)
+        record: dict[str, Any] = {"number": number, "camera": look.view.camera.to_json()}
+        outcome.records.append(record)
+        named = self._ask_name(outcome, number, look, record)
+        if named is None:
+            return False
+        self._ask_point(outcome, number, look, record, named, start)
+        return True
+
+    def _look(self, outcome: PointingOutcome) -> _View:
+        """The receptacle seen from above in the scene as it is now, with its surfaces."""
+        from holomj.mjcf.compiler import compile_scene
+        from holomj.physics.spawn_requests import find_object
+        from holomj.physics.surfaces_world import world_surfaces
+
         library = self.ctx.library
         receptacle = find_object(outcome.scene, self.receptacle_id)
         meta = library.get(receptacle.asset).meta
@@ -161,10 +165,17 @@ class _Pointer:
             for o in outcome.scene.objects
             if o.support == self.receptacle_id
         ]
-        record: dict[str, Any] = {"number": number, "camera": view.camera.to_json()}
-        outcome.records.append(record)
+        return _View(view, surfaces, meta.category, caption, on_it)
+
+    def _ask_name(
+        self, outcome: PointingOutcome, number: int, look: _View, record: dict[str, Any]
+    ) -> tuple[str, dict[str, Any]] | None:
+        """The next object the model names and the asset retrieved for it; None when the model
+        failed or said the instruction is fulfilled (recorded)."""
+        from holomj.refinement import pointing
+
         question = pointing.name_question(
-            self.instruction, self.receptacle_id, meta.category, on_it, self.count - number
+            self.instruction, self.receptacle_id, look.category, look.on_it, self.count - number
         )
         retrieved: dict[str, Any] = {}
 
@@ -181,7 +192,7 @@ class _Pointer:
             name, step = self.chat.ask(
                 f"name {number}",
                 question,
-                [(caption, view.png)],
+                [(look.caption, look.view.png)],
                 parse_name,
                 system=pointing.SYSTEM,
             )
@@ -189,21 +200,37 @@ class _Pointer:
             self.account(getattr(err, "record", {}))
             record.update(status="failed", reason=err.one_line())
             self.emit(f"pointing {number}: {err.one_line()}")
-            return False
+            return None
         self.account(step)
         record["name_step"] = step
         outcome.asked += 1
         if name is None:
             record.update(status="done", reason="the model said the instruction is fulfilled")
             outcome.done = True
-            return False
+            return None
         record.update(name=name, **retrieved)
+        return name, retrieved
+
+    def _ask_point(
+        self,
+        outcome: PointingOutcome,
+        number: int,
+        look: _View,
+        record: dict[str, Any],
+        named: tuple[str, dict[str, Any]],
+        start: float,
+    ) -> None:
+        """Ask where the named object goes and drop it there (the record says how it went)."""
+        from holomj.refinement import pointing
+
+        name, retrieved = named
+        camera = look.view.camera
         placed: dict[str, Any] = {}
 
         def parse_point(content: str) -> tuple[int, int]:
-            u, v = pointing.parse_pixel(content, view.camera.width, view.camera.height)
-            hit = pointing.hit_surface(view.camera, u, v, surfaces)
-            scene_after, drop = _drop_at(
+            u, v = pointing.parse_pixel(content, camera.width, camera.height)
+            hit = pointing.hit_surface(camera, u, v, look.surfaces)
+            scene_after, drop = drop_at(
                 outcome.scene, self.ctx, self.receptacle_id, retrieved["asset"], hit, self.seed,
                 number, self.max_attempts,
             )  # fmt: skip
@@ -218,8 +245,8 @@ class _Pointer:
         try:
             pixel, step = self.chat.ask(
                 f"point {number}",
-                pointing.point_question(name, view.camera.width, view.camera.height),
-                [(caption, view.png)],
+                pointing.point_question(name, camera.width, camera.height),
+                [(look.caption, look.view.png)],
                 parse_point,
                 system=pointing.SYSTEM,
             )
@@ -228,7 +255,7 @@ class _Pointer:
             record.update(status="not placed", reason=err.one_line())
             record["seconds"] = round(time.perf_counter() - start, 3)
             self.emit(f"pointing {number}: {name}: {err.one_line()}")
-            return True
+            return
         self.account(step)
         hit = placed["hit"]
         outcome.scene = placed["scene"]
@@ -246,7 +273,18 @@ class _Pointer:
             f"pointing {number}: {name} -> {placed['drop']['object_id']} at pixel {pixel}, "
             f"{placed['drop']['distance_m'] * 100:.1f} cm from the pointed spot"
         )
-        return True
+
+
+@dataclass(frozen=True)
+class _View:
+    """What the model is shown: the render, the receptacle's surfaces in the world, its
+    category, the image's caption and what already stands on it."""
+
+    view: Any
+    surfaces: list[Any]
+    category: str
+    caption: str
+    on_it: list[str]
 
 
 def _render(
@@ -306,92 +344,3 @@ def _retrieve(
         "category": asked.category,
         "how": getattr(pick, "how", "ranked"),
     }
-
-
-def _drop_at(
-    scene: SceneSpec,
-    ctx: Any,
-    receptacle_id: str,
-    asset_id: str,
-    hit: Any,
-    seed: int,
-    number: int,
-    max_attempts: int,
-) -> tuple[SceneSpec | None, dict[str, Any]]:
-    """Spawn-and-drop ``asset_id`` on the surface ``hit.index`` near ``hit.point`` (see the
-    module docstring): the new scene (None when it found no place) and the drop's record."""
-    from holomj.physics.spawn import find_object, populate
-    from holomj.seeds import stage_rng
-
-    library = ctx.library
-    receptacle = find_object(scene, receptacle_id)
-    asset = library.get(receptacle.asset)
-    small = library.get(asset_id).meta
-    half_diag = 0.5 * math.hypot(small.size[0], small.size[1])
-    reasons = []
-    for margin in CROP_MARGINS_M:
-        cropped = _cropped_library(library, receptacle, asset, hit, half_diag + margin)
-        if cropped is None:
-            reasons.append(f"within {margin * 100:.0f} cm: the surface is too small there")
-            continue
-        try:
-            result = populate(
-                scene,
-                cropped,
-                receptacle_id,
-                [(asset_id, 1)],
-                stage_rng(seed, "pointing", str(number), str(margin)),
-                max_attempts=max_attempts,
-                attach=ctx.attach,
-            )
-        except HolomjError as err:
-            reasons.append(err.one_line())
-            continue
-        placement = result.placements[0]
-        if placement.accepted and placement.final_pose is not None:
-            final = placement.final_pose["position"]
-            distance = math.hypot(final[0] - hit.point[0], final[1] - hit.point[1])
-            return result.scene, {
-                "object_id": placement.object_id,
-                "asset": placement.asset,
-                "attempts": placement.attempts,
-                "final_position": final,
-                "distance_m": round(distance, 4),
-                "margin_m": margin,
-                "reason": "placed",
-            }
-        reasons.append(f"within {margin * 100:.0f} cm: {placement.reason}")
-    return None, {"reason": "; ".join(reasons) or "no place"}
-
-
-def _cropped_library(
-    library: AssetLibrary, receptacle: Any, asset: LibraryAsset, hit: Any, radius: float
-) -> AssetLibrary | None:
-    """``library`` with the receptacle's asset showing only the hit surface, cut to a disc of
-    ``radius`` around the hit point (in the asset frame); the surfaces above it stay, shrunk to
-    nothing, so the headroom under them still counts. None when the cut is empty."""
-    from holomj.physics.surfaces_world import object_yaw
-    from holomj.spec.assets import SupportSurface
-
-    meta = asset.meta
-    sx, sy, _ = receptacle.scale3
-    yaw = object_yaw(receptacle)
-    dx, dy = hit.point[0] - receptacle.position[0], hit.point[1] - receptacle.position[1]
-    c, s = math.cos(-yaw), math.sin(-yaw)
-    local = ((c * dx - s * dy) / sx, (s * dx + c * dy) / sy)
-    surface = meta.surfaces[hit.index]
-    disc = Point(local).buffer(radius / min(sx, sy), 32)
-    cut = Polygon(surface.polygon).intersection(disc)
-    if isinstance(cut, MultiPolygon):
-        cut = max(cut.geoms, key=lambda g: g.area)
-    if not isinstance(cut, Polygon) or cut.is_empty or cut.area < 1e-6:
-        return None
-    coords = [(round(x, 6), round(y, 6)) for x, y in np.asarray(cut.exterior.coords)[:-1]]
-    surfaces = [SupportSurface(height=surface.height, polygon=coords, area_m2=float(cut.area))]
-    for other in meta.surfaces:
-        if other.height > surface.height + 1e-6:
-            surfaces.append(SupportSurface(height=other.height, polygon=list(TINY), area_m2=1e-8))
-    view = meta.model_copy(update={"surfaces": surfaces})
-    assets = {aid: library.get(aid) for aid in library.ids()}
-    assets[meta.id] = LibraryAsset(view, asset.root)
-    return AssetLibrary(library.root, library.name, assets)

@@ -24,11 +24,12 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any
 
 from holomj.errors import HolomjError, InputError
 from holomj.file_names import POPULATE_REPORT, RENDERS_DIR, REPORT_HTML, REPORT_JSON
 from holomj.jobs.folder import (
+    PreparedOutput,
     attach_folder_robot,
     open_library,
     prepare_output,
@@ -37,15 +38,21 @@ from holomj.jobs.folder import (
     require_scene_folder,
     write_scene_folder,
 )
-from holomj.jobs.receptacle_priors import DEFAULT_COUNT, prior_requests
+from holomj.jobs.plan import check_planner
+from holomj.jobs.receptacle_priors import DEFAULT_COUNT, instruction_requests, prior_requests
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.physics.scene_io import loaded_from_compiled
 from holomj.physics.settle import validate_loaded
-from holomj.physics.spawn import find_object, merge_libraries, populate
+from holomj.physics.spawn import populate
+from holomj.physics.spawn_requests import find_object, merge_libraries
 from holomj.seeds import MAX_SEED, seed_rng, stage_rng
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
+
+if TYPE_CHECKING:
+    from holomj.jobs.pointing import PointingOutcome
+    from holomj.refinement.llm import VisionChat
 
 MAX_ATTEMPTS = 1000
 MAX_DRAWN = 20  # objects drawn for a receptacle when none are named
@@ -103,7 +110,7 @@ def populate_folder(
     max_attempts: int = 20,
     count: int = DEFAULT_COUNT,
     instruction: str | None = None,
-    planner: Literal["offline", "llm"] = "offline",
+    planner: str = "offline",
     llm_config: Any = None,
     images: bool | None = None,
     log: Callable[[str], None] | None = None,
@@ -122,26 +129,12 @@ def populate_folder(
     """
     folder = require_scene_folder(Path(folder), "holomj compile' or 'holomj generate")
     prepared = prepare_output(folder, overwrite=True)  # rewritable, before any work
-    if isinstance(requests, str):
-        requests = parse_objects(requests)
-    if instruction is not None:
-        instruction = " ".join(instruction.split())
-        if not instruction:
-            raise InputError("empty instruction", where="--instruction")
-        if requests is not None:
-            raise InputError("give --objects or --instruction, not both", where="--instruction")
-    if planner not in ("offline", "llm"):
-        raise InputError(f"unknown planner {planner!r}", where="--planner", fix="offline or llm")
-    if not 0 <= seed <= MAX_SEED:
-        raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
-    if max_attempts < 1 or max_attempts > MAX_ATTEMPTS:
-        raise InputError(f"must lie in [1, {MAX_ATTEMPTS}]", where="--max-attempts")
+    requests, instruction = _checked_arguments(requests, instruction, planner, seed, max_attempts)
     scene = read_scene(folder)
     libraries = [open_library(folder)]
     if library_path is not None:
         libraries.append(AssetLibrary.open(library_path))
     library = merge_libraries(*libraries)
-    drawn_from = None
     notes: list[str] = []
 
     def with_robot(compiled: CompiledScene) -> CompiledScene:
@@ -152,96 +145,204 @@ def populate_folder(
         chat, why = _chat(llm_config, images, seed, log)
         if chat is None:
             notes.append(f"no LLM to point with ({why}): the offline planner decided")
-    if requests is None and chat is None:
-        if not 1 <= count <= MAX_DRAWN:
-            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
-        category = library.get(find_object(scene, receptacle_id).asset).meta.category
-        if instruction is not None:
-            requests = _instruction_requests(instruction, library, count)
-            drawn_from = "instruction" if requests else None
-        if not requests:
-            requests, drawn_from = prior_requests(
-                category, library, stage_rng(seed, "populate", "priors"), count
-            )
     if chat is not None:
-        if not 1 <= count <= MAX_DRAWN:
-            raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
-        from holomj.jobs.pointing import populate_by_pointing
-
-        find_object(scene, receptacle_id)
-        pointed = populate_by_pointing(
-            folder,
-            scene,
-            receptacle_id,
-            instruction or "",
-            count=count,
-            chat=chat,
-            own=libraries[0],
-            source=libraries[1] if len(libraries) > 1 else None,
-            seed=seed,
-            max_attempts=max_attempts,
-            attach=with_robot,
-            log=log,
-        )
-        result_scene = pointed.scene
+        result_scene, run = _run_pointing(
+            folder, scene, receptacle_id, instruction or "", count, chat, libraries,
+            seed, max_attempts, with_robot, log,
+        )  # fmt: skip
         library = merge_libraries(*libraries)  # with the assets made on demand
-        placements = [
-            {
-                "object_id": r.get("object_id"),
-                "asset": r.get("asset"),
-                "accepted": r.get("status") == "placed",
-                "reason": r.get("reason", r.get("status")),
-                "attempts": r.get("attempts", 0),
-            }
-            for r in pointed.records
-            if r.get("status") != "done"
-        ]
-        run: dict[str, Any] = {
-            "receptacle": receptacle_id,
-            "requests": [{"name": r["name"], "count": 1} for r in pointed.records if r.get("name")],
-            "drawn_from": "llm pointing",
-            "seed": seed,
-            "max_attempts": max_attempts,
-            "requested": len(placements),
-            "placed": pointed.placed,
-            "placements": placements,
-            "pointing": pointed.records,
-            "llm": {
-                "model": chat.config.model,
-                "images": chat.images,
-                "text_only_reason": chat.text_only_reason,
-                **pointed.usage,
-            },
-        }
     else:
-        assert requests is not None  # drawn above
-        result = populate(
-            scene,
-            library,
-            receptacle_id,
-            requests,
-            seed_rng(seed),
-            max_attempts=max_attempts,
-            attach=with_robot,
-        )
-        result_scene = result.scene
-        run = {
-            "receptacle": receptacle_id,
-            "requests": [{"name": n, "count": c} for n, c in requests],
-            "drawn_from": drawn_from,
-            "seed": seed,
-            "max_attempts": max_attempts,
-            **result.to_dict(),
-        }
+        result_scene, run = _run_drops(
+            scene, library, receptacle_id, requests, instruction, count, seed, max_attempts,
+            with_robot,
+        )  # fmt: skip
     if instruction is not None:
         run["instruction"] = instruction
         run["planner"] = "llm" if chat is not None else "offline"
     if notes:
         run["notes"] = notes
-    compiled = with_robot(compile_scene(result_scene, library))
+    report = _write_populated(folder, prepared, result_scene, library, run, with_robot)
+    return PopulateResult(
+        folder=str(folder),
+        receptacle=receptacle_id,
+        requested=run["requested"],
+        placed=run["placed"],
+        report=report,
+    )
+
+
+def _run_pointing(
+    folder: Path,
+    scene: SceneSpec,
+    receptacle_id: str,
+    instruction: str,
+    count: int,
+    chat: VisionChat,
+    libraries: list[AssetLibrary],
+    seed: int,
+    max_attempts: int,
+    with_robot: Callable[[CompiledScene], CompiledScene],
+    log: Callable[[str], None] | None,
+) -> tuple[SceneSpec, dict[str, Any]]:
+    """The model names each object and points at where it goes; the populated scene and the
+    run's report. Assets made on demand are added to ``libraries[0]`` (the folder's)."""
+    _check_count(count)
+    from holomj.jobs.pointing import populate_by_pointing
+
+    find_object(scene, receptacle_id)
+    pointed = populate_by_pointing(
+        folder,
+        scene,
+        receptacle_id,
+        instruction,
+        count=count,
+        chat=chat,
+        own=libraries[0],
+        source=libraries[1] if len(libraries) > 1 else None,
+        seed=seed,
+        max_attempts=max_attempts,
+        attach=with_robot,
+        log=log,
+    )
+    return pointed.scene, _pointing_run(pointed, chat, receptacle_id, seed, max_attempts)
+
+
+def _run_drops(
+    scene: SceneSpec,
+    library: AssetLibrary,
+    receptacle_id: str,
+    requests: list[tuple[str, int]] | None,
+    instruction: str | None,
+    count: int,
+    seed: int,
+    max_attempts: int,
+    with_robot: Callable[[CompiledScene], CompiledScene],
+) -> tuple[SceneSpec, dict[str, Any]]:
+    """Spawn-and-drop the requests (drawn when None); the populated scene and the run's
+    report."""
+    drawn_from = None
+    if requests is None:
+        requests, drawn_from = _drawn_requests(
+            scene, library, receptacle_id, instruction, count, seed
+        )
+    result = populate(
+        scene,
+        library,
+        receptacle_id,
+        requests,
+        seed_rng(seed),
+        max_attempts=max_attempts,
+        attach=with_robot,
+    )
+    run = {
+        "receptacle": receptacle_id,
+        "requests": [{"name": n, "count": c} for n, c in requests],
+        "drawn_from": drawn_from,
+        "seed": seed,
+        "max_attempts": max_attempts,
+        **result.to_dict(),
+    }
+    return result.scene, run
+
+
+def _checked_arguments(
+    requests: list[tuple[str, int]] | str | None,
+    instruction: str | None,
+    planner: str,
+    seed: int,
+    max_attempts: int,
+) -> tuple[list[tuple[str, int]] | None, str | None]:
+    """The requests (parsed from their text form) and the instruction (whitespace collapsed),
+    after checking the arguments that do not need the scene."""
+    if isinstance(requests, str):
+        requests = parse_objects(requests)
+    if instruction is not None:
+        instruction = " ".join(instruction.split())
+        if not instruction:
+            raise InputError("empty instruction", where="--instruction")
+        if requests is not None:
+            raise InputError("give --objects or --instruction, not both", where="--instruction")
+    check_planner(planner)
+    if not 0 <= seed <= MAX_SEED:
+        raise InputError(f"must lie in [0, {MAX_SEED}]", where="--seed")
+    if max_attempts < 1 or max_attempts > MAX_ATTEMPTS:
+        raise InputError(f"must lie in [1, {MAX_ATTEMPTS}]", where="--max-attempts")
+    return requests, instruction
+
+
+def _check_count(count: int) -> None:
+    if not 1 <= count <= MAX_DRAWN:
+        raise InputError(f"must lie in [1, {MAX_DRAWN}]", where="--count")
+
+
+def _drawn_requests(
+    scene: SceneSpec,
+    library: AssetLibrary,
+    receptacle_id: str,
+    instruction: str | None,
+    count: int,
+    seed: int,
+) -> tuple[list[tuple[str, int]], str | None]:
+    """Requests when none were given: the instruction's small objects the library holds, else
+    ``count`` drawn from the receptacle priors; with where they were drawn from."""
+    _check_count(count)
+    category = library.get(find_object(scene, receptacle_id).asset).meta.category
+    if instruction is not None:
+        requests = instruction_requests(instruction, library, count)
+        if requests:
+            return requests, "instruction"
+    return prior_requests(category, library, stage_rng(seed, "populate", "priors"), count)
+
+
+def _pointing_run(
+    pointed: PointingOutcome, chat: VisionChat, receptacle_id: str, seed: int, max_attempts: int
+) -> dict[str, Any]:
+    """The report of a run in which the model pointed at where each object goes."""
+    placements = [
+        {
+            "object_id": r.get("object_id"),
+            "asset": r.get("asset"),
+            "accepted": r.get("status") == "placed",
+            "reason": r.get("reason", r.get("status")),
+            "attempts": r.get("attempts", 0),
+        }
+        for r in pointed.records
+        if r.get("status") != "done"
+    ]
+    return {
+        "receptacle": receptacle_id,
+        "requests": [{"name": r["name"], "count": 1} for r in pointed.records if r.get("name")],
+        "drawn_from": "llm pointing",
+        "seed": seed,
+        "max_attempts": max_attempts,
+        "requested": len(placements),
+        "placed": pointed.placed,
+        "placements": placements,
+        "pointing": pointed.records,
+        "llm": {
+            "model": chat.config.model,
+            "images": chat.images,
+            "text_only_reason": chat.text_only_reason,
+            **pointed.usage,
+        },
+    }
+
+
+def _write_populated(
+    folder: Path,
+    prepared: PreparedOutput,
+    scene: SceneSpec,
+    library: AssetLibrary,
+    run: dict[str, Any],
+    with_robot: Callable[[CompiledScene], CompiledScene],
+) -> dict[str, Any]:
+    """Compile the populated scene and write it back into ``folder`` (``prepared`` for writing)
+    with its validation (when the folder had one) and the populate report; returns the
+    report."""
+    compiled = with_robot(compile_scene(scene, library))
     written: dict[str, Any] = {}
     if (folder / REPORT_JSON).exists():
-        validation = _validate(result_scene, library, folder)
+        validation = _validate(scene, library, folder)
         written[REPORT_JSON] = validation.model_dump(mode="json")
         run["validation"] = {
             "ok": validation.ok,
@@ -254,18 +355,12 @@ def populate_folder(
     report = {**run, "runs": [*previous, run], "stale_files": stale}
     written[POPULATE_REPORT] = report
     write_scene_folder(compiled, prepared, extra_json=written, keep_from=folder)
-    return PopulateResult(
-        folder=str(folder),
-        receptacle=receptacle_id,
-        requested=run["requested"],
-        placed=run["placed"],
-        report=report,
-    )
+    return report
 
 
 def _chat(
     config: Any, images: bool | None, seed: int, log: Callable[[str], None] | None
-) -> tuple[Any, str]:
+) -> tuple[VisionChat | None, str]:
     """The model to point with, or (None, why not) when none is configured."""
     from holomj.jobs.refine import resolve_llm_config
     from holomj.refinement.llm import VisionChat, images_enabled
@@ -275,29 +370,6 @@ def _chat(
     except InputError as err:
         return None, err.one_line()
     return VisionChat(config, images=images_enabled(images), seed=seed, log=log), ""
-
-
-def _instruction_requests(
-    instruction: str, library: AssetLibrary, count: int
-) -> list[tuple[str, int]]:
-    """The small objects an instruction names that the library holds (at most ``count``)."""
-    from holomj.plan.knowledge import knowledge_base
-    from holomj.plan.prompt import parse_prompt
-
-    kb = knowledge_base()
-    requests: list[tuple[str, int]] = []
-    left = count
-    for request in parse_prompt(instruction, kb).objects:
-        kind = kb.objects.get(request.kind)
-        if request.excluded or kind is None or kind.placement != "object" or left <= 0:
-            continue
-        assets = [a for a in library.by_category(kind.category) if "object" in a.meta.placement]
-        if not assets:
-            continue
-        n = min(request.quantity or (2 if request.plural else 1), left)
-        requests.append((kind.category, n))
-        left -= n
-    return requests
 
 
 def _validate(scene: SceneSpec, library: AssetLibrary, folder: Path) -> StabilityReport:

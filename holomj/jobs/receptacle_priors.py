@@ -11,7 +11,8 @@ and only those the libraries hold a small-object asset of are kept. A receptacle
 maps to uses the planner's own tables (``small_objects_on_receptacles.json`` and
 ``knowledge/receptacles.json``). Draws
 are made with the job's seed, in proportion to the counts, at most :data:`MAX_SAME` of one
-category.
+category. With an instruction instead (offline), the small objects it names that the library
+holds are dropped (:func:`instruction_requests`).
 """
 
 from __future__ import annotations
@@ -109,3 +110,26 @@ def prior_requests(
         pick = names[int(rng.choice(len(names), p=q / q.sum()))]
         drawn[pick] += 1
     return [(name, n) for name, n in drawn.items()], source
+
+
+def instruction_requests(
+    instruction: str, library: AssetLibrary, count: int
+) -> list[tuple[str, int]]:
+    """The small objects an instruction names that the library holds (at most ``count``)."""
+    from holomj.plan.knowledge import knowledge_base
+    from holomj.plan.prompt import parse_prompt
+
+    kb = knowledge_base()
+    requests: list[tuple[str, int]] = []
+    left = count
+    for request in parse_prompt(instruction, kb).objects:
+        kind = kb.objects.get(request.kind)
+        if request.excluded or kind is None or kind.placement != "object" or left <= 0:
+            continue
+        assets = [a for a in library.by_category(kind.category) if "object" in a.meta.placement]
+        if not assets:
+            continue
+        n = min(request.quantity or (2 if request.plural else 1), left)
+        requests.append((kind.category, n))
+        left -= n
+    return requests

@@ -8,10 +8,11 @@ the plan; ``validate()``, ``render()`` and ``model()`` run the jobs on the folde
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from holomj.errors import InputError, closest_names
 from holomj.file_names import PLAN_JSON, REPORT_JSON, SCENE_XML
@@ -24,6 +25,7 @@ from holomj.jobs.folder import (
 )
 from holomj.library.store import AssetLibrary
 from holomj.spec.base import validate_model
+from holomj.spec.edit import EditReport
 from holomj.spec.plan import ScenePlan
 from holomj.spec.report import StabilityReport
 from holomj.spec.robot import RobotRecord
@@ -68,11 +70,17 @@ def object_pose(obj: SceneObject) -> Pose:
     else:
         half = math.radians(obj.yaw_deg) / 2
         quat, yaw = (math.cos(half), 0.0, 0.0, math.sin(half)), obj.yaw_deg
-    return Pose(tuple(obj.position), quat, round(yaw, 6))  # type: ignore[arg-type]
+    px, py, pz = obj.position
+    return Pose((px, py, pz), quat, round(yaw, 6))
+
+
+_Scene = TypeVar("_Scene", bound="Scene")
 
 
 class Scene:
-    """A holomj scene folder, loaded: ``Scene.load("out/house")``.
+    """A holomj scene folder, loaded (re-exported as ``holomj.Scene``): ``Scene.load(folder)``
+    or ``Scene.open(folder)``; ``.objects``, ``.rooms``, ``.report``, ``.model()``, and
+    ``.edit(ops)``.
 
     Raises :class:`~holomj.errors.InputError` for a folder that is not a holomj scene and
     :class:`~holomj.errors.FormatError` for one whose files cannot be read.
@@ -84,10 +92,15 @@ class Scene:
         self.library = library
 
     @classmethod
-    def load(cls, folder: Path | str) -> Scene:
+    def load(cls: type[_Scene], folder: Path | str) -> _Scene:
         """Load the scene folder ``folder`` (written by generate, compile, populate, ...)."""
         folder = require_scene_folder(Path(folder), "holomj generate' or 'holomj compile")
         return cls(folder, read_scene(folder), open_library(folder))
+
+    @classmethod
+    def open(cls: type[_Scene], folder: Path | str) -> _Scene:
+        """Load the scene folder ``folder`` (as :meth:`load`)."""
+        return cls.load(folder)
 
     def __repr__(self) -> str:
         return (
@@ -162,6 +175,44 @@ class Scene:
 
         return validate(self.folder, **options)
 
+    def edit(
+        self,
+        ops: Path | str | Sequence[Any],
+        out: Path | str | None = None,
+        *,
+        seed: int = 0,
+        library: Path | str | AssetLibrary | None = None,
+        overwrite: bool = False,
+        validate: bool = True,
+    ) -> EditReport:
+        """``holomj edit``: apply edit operations (a JSON file, or a list of operations as
+        dicts or :mod:`holomj.spec.edit` models) and write the result into ``out`` (a new
+        folder), or back into this folder, which this object then shows.
+
+        Returns the :class:`~holomj.spec.edit.EditReport` (``.ok``, ``.operations`` with each
+        one's ``status`` and ``reason``, ``.added``, ``.removed``, ``.moved``,
+        ``.validation``). Raises :class:`~holomj.errors.InputError` for a malformed operations
+        list (nothing is written) and :class:`~holomj.errors.OutputExistsError` when ``out``
+        exists (without ``overwrite``); refused operations are in the report, not raised.
+        """
+        from holomj.jobs.edit import apply_edits
+        from holomj.jobs.library import resolve_library
+
+        report = apply_edits(
+            self.folder,
+            ops,
+            out,
+            seed=seed,
+            library_path=resolve_library(library),
+            overwrite=overwrite,
+            validate=validate,
+        )
+        if out is None or Path(out).resolve() == Path(self.folder).resolve():
+            fresh = type(self).load(self.folder)
+            self.spec, self.library = fresh.spec, fresh.library
+            self.__dict__.pop("objects", None)  # the cached object list
+        return report
+
     def _info(self, obj: SceneObject) -> ObjectInfo:
         meta = self.library.get(obj.asset).meta if obj.asset in self.library else None
         sx, sy, sz = obj.scale3
@@ -174,5 +225,5 @@ class Scene:
             pose=object_pose(obj),
             static=obj.static,
             support=obj.support,
-            size=tuple(round(v, 6) for v in size),  # type: ignore[arg-type]
+            size=(round(size[0], 6), round(size[1], 6), round(size[2], 6)),
         )

@@ -187,7 +187,7 @@ def synthesise(
         asset_id=asset_id,
         category=name,
         how="synthesised",
-        size=tuple(meta.size),  # type: ignore[arg-type]
+        size=tuple(meta.size),
         attributes_honoured=dict(meta.attributes),
         reused=reused,
         library=Path(root),
@@ -210,8 +210,9 @@ def synthesise_proxy(
     from asset_pipeline.procedural.proxies import build_proxy, proxy_family, proxy_size
 
     label = proxy_category(category)
-    asked = tuple(round(float(v), SIZE_DECIMALS) for v in size)
-    family = proxy_family(label, asked, placement)  # type: ignore[arg-type]
+    x, y, z = (round(float(v), SIZE_DECIMALS) for v in size)
+    asked = (x, y, z)
+    family = proxy_family(label, asked, placement)
     wanted = Attributes.from_dict(attributes)
     key = {
         "kind": "proxy",
@@ -224,19 +225,19 @@ def synthesise_proxy(
     asset_id = f"{label}_{_hash(key)}"
 
     def build() -> Any:
-        bundle, _ = build_proxy(label, asset_id, asked, placement, wanted, family)  # type: ignore[arg-type]
+        bundle, _ = build_proxy(label, asset_id, asked, placement, wanted, family)
         return _on_demand(bundle, PROXY_SOURCE)
 
     folder, reused, meta = _store(Path(root), asset_id, build)
     notes = []
-    fitted = proxy_size(family, asked)  # type: ignore[arg-type]
+    fitted = proxy_size(family, asked)
     if any(abs(a - b) > 1e-6 for a, b in zip(asked, fitted, strict=True)):
         notes.append(f"a {family} proxy is {_fmt(meta.size)} m (asked {_fmt(asked)} m)")
     return Synthesis(
         asset_id=asset_id,
         category=label,
         how="proxy",
-        size=tuple(meta.size),  # type: ignore[arg-type]
+        size=tuple(meta.size),
         attributes_honoured=dict(meta.attributes),
         reused=reused,
         library=Path(root),

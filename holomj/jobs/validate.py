@@ -14,6 +14,7 @@ from holomj.errors import InputError
 from holomj.jobs.folder import (
     attach_folder_robot,
     load_for_physics,
+    open_library,
     prepare_output,
     scene_folder,
     write_scene_folder,
@@ -22,17 +23,18 @@ from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.objects import Furniture
 from holomj.physics.repair import RepairOutcome, repair_scene
 from holomj.physics.settle import validate_loaded
+from holomj.spec.choices import one_of
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
 
-FURNITURE_MODES = ("free", "static", "as-is")
+FURNITURE_MODES: tuple[Furniture, ...] = ("free", "static", "as-is")
 
 
 def validate(
     path: Path | str,
     *,
     thresholds: Thresholds | None = None,
-    furniture: Furniture = "free",
+    furniture: str = "free",
     sleep: bool = False,
     repair: bool = False,
 ) -> StabilityReport:
@@ -45,18 +47,17 @@ def validate(
     that is not a holomj folder, :class:`~holomj.errors.FormatError` when the scene cannot be
     read or loaded.
     """
-    if furniture not in FURNITURE_MODES:
+    mode = one_of(furniture, FURNITURE_MODES)
+    if mode is None:
         raise InputError(
             f"unknown value {furniture!r}", where="--furniture", fix="use free, static or as-is"
         )
     if repair:
-        outcome = repair_folder(path, thresholds, furniture, sleep)
-        report = validate(
-            outcome_folder(path), thresholds=thresholds, furniture=furniture, sleep=sleep
-        )
+        outcome = repair_folder(path, thresholds, mode, sleep)
+        report = validate(outcome_folder(path), thresholds=thresholds, furniture=mode, sleep=sleep)
         return report.model_copy(update={"repaired": outcome.repaired, "unsaved": outcome.unsaved})
-    loaded = load_for_physics(Path(path), furniture=furniture)
-    return validate_loaded(loaded, thresholds, furniture, sleep)
+    loaded = load_for_physics(Path(path), furniture=mode)
+    return validate_loaded(loaded, thresholds, mode, sleep)
 
 
 def outcome_folder(path: Path | str) -> Path:
@@ -80,8 +81,8 @@ def repair_folder(
     """Repair the holomj folder at ``path`` and write it back atomically (other files kept)."""
     folder = outcome_folder(path)
     prepared = prepare_output(folder, overwrite=True)  # rewritable, before any work
-    loaded = load_for_physics(folder, furniture=furniture)
-    library = loaded.library
+    library = open_library(folder)
+    loaded = load_for_physics(folder, furniture=furniture, library=library)
 
     def recompile(scene: SceneSpec, mode: Furniture) -> CompiledScene:
         return attach_folder_robot(compile_scene(scene, library, furniture=mode), folder)

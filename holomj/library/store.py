@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
+from typing import TypeVar
 
 from holomj.errors import AssetNotFoundError, SpecError, closest_names
 from holomj.file_names import LIBRARY_INDEX, LIBRARY_META
@@ -37,6 +38,9 @@ class LibraryAsset:
         return self.root / relative
 
 
+_Library = TypeVar("_Library", bound="AssetLibrary")
+
+
 class AssetLibrary:
     """An on-disk asset library (read-only view)."""
 
@@ -46,7 +50,7 @@ class AssetLibrary:
         self._assets = assets
 
     @classmethod
-    def open(cls, root: Path | str | None = None) -> AssetLibrary:
+    def open(cls: type[_Library], root: Path | str | None = None) -> _Library:
         """Open the library at ``root`` (default: :func:`default_library_root`)."""
         root = Path(root) if root is not None else default_library_root()
         index_path = root / LIBRARY_INDEX

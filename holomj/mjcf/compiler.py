@@ -17,6 +17,7 @@ from holomj.mjcf.objects import Furniture, ObjectBuilder
 from holomj.mjcf.opening_geometry import add_openings, place_openings
 from holomj.mjcf.structure import add_floors_and_ceilings, add_ground, add_walls
 from holomj.mjcf.views import add_cameras, add_lights
+from holomj.spec.choices import one_of
 from holomj.spec.scene import SceneSpec
 from mjcf_templates import template_path
 
@@ -25,7 +26,7 @@ if TYPE_CHECKING:
 
 BASE_TEMPLATE = "base_scene.xml"
 Profile = Literal["default", "mjx"]
-PROFILES: tuple[str, ...] = ("default", "mjx")
+PROFILES: tuple[Profile, ...] = ("default", "mjx")
 
 
 @dataclass
@@ -48,11 +49,12 @@ class CompiledScene:
 
 def check_profile(profile: str) -> Profile:
     """``profile`` if it is a known compile profile, else an InputError listing them."""
-    if profile not in PROFILES:
+    chosen = one_of(profile, PROFILES)
+    if chosen is None:
         raise InputError(
             f"unknown profile {profile!r}", where="--profile", fix=f"use {' or '.join(PROFILES)}"
         )
-    return profile  # type: ignore[return-value]
+    return chosen
 
 
 def compile_scene(
@@ -123,7 +125,7 @@ def compile_spec(spec: mujoco.MjSpec, files: dict[str, bytes]) -> mujoco.MjModel
         name: f"{hashlib.sha256(data).hexdigest()[:24]}{PurePosixPath(name).suffix}"
         for name, data in files.items()
     }
-    renamed: list[tuple[object, str]] = []
+    renamed: list[tuple[mujoco.MjsMesh | mujoco.MjsTexture, str]] = []
     dirs, assets = (spec.meshdir, spec.texturedir), dict(spec.assets)
     try:
         for element in [*spec.meshes, *spec.textures]:
@@ -136,7 +138,7 @@ def compile_spec(spec: mujoco.MjSpec, files: dict[str, bytes]) -> mujoco.MjModel
     finally:
         spec.meshdir, spec.texturedir = dirs
         for element, name in renamed:
-            element.file = name  # type: ignore[attr-defined]
+            element.file = name
         spec.assets = assets
 
 

@@ -28,7 +28,8 @@ def quat_from_axes(x_axis: np.ndarray, y_axis: np.ndarray, z_axis: np.ndarray) -
     mujoco.mju_mat2Quat(quat, mat.reshape(-1))
     if quat[0] < 0:
         quat = -quat
-    return tuple(_clean(float(q)) for q in quat)  # type: ignore[return-value]
+    w, x, y, z = (_clean(float(q)) for q in quat)
+    return (w, x, y, z)
 
 
 def look_at_quat(position: Sequence[float], target: Sequence[float]) -> Quat:
@@ -51,7 +52,7 @@ def _clean(value: float) -> float:
     return 0.0 if rounded == 0 else rounded
 
 
-def clean(values: Sequence[float]) -> list[float]:
+def clean(values: Sequence[float] | np.ndarray) -> list[float]:
     """:func:`_clean` for every value."""
     return [_clean(float(v)) for v in values]
 

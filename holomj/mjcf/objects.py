@@ -154,21 +154,21 @@ class ObjectBuilder:
             mesh.info = f"visual mesh {part.mesh} of asset {meta.id}"
             visual_meshes.append(mesh.name)
         collision_meshes = {}
-        for k, part in enumerate(meta.collision):
-            if part.kind != "mesh" or part.mesh is None:
+        for k, hull in enumerate(meta.collision):
+            if hull.kind != "mesh" or hull.mesh is None:
                 continue
             mesh = self.ctx.spec.add_mesh(
                 name=names.asset_collision_mesh(prefix, k),
-                file=self._register(asset, folder, part.mesh),
+                file=self._register(asset, folder, hull.mesh),
                 scale=list(scale),
                 inertia=mujoco.mjtMeshInertia.mjMESH_INERTIA_CONVEX,
                 maxhullvert=meta.maxhullvert,
             )
-            mesh.info = f"collision hull {part.mesh} of asset {meta.id}"
+            mesh.info = f"collision hull {hull.mesh} of asset {meta.id}"
             collision_meshes[k] = mesh.name
         parts = {}
-        for part in meta.articulation.parts if meta.articulation is not None else ():
-            parts[part.name] = self._part_handles(asset, folder, prefix, part, scale)
+        for moving in meta.articulation.parts if meta.articulation is not None else ():
+            parts[moving.name] = self._part_handles(asset, folder, prefix, moving, scale)
         handles = _AssetHandles(
             visual_meshes, self._asset_materials(asset, folder), collision_meshes, parts
         )

@@ -55,7 +55,7 @@ def place_openings(ctx: BuildContext, walls: list[Wall]) -> dict[str, list[Place
     """Every door and window of the scene, grouped by wall id."""
     scene = ctx.scene
     placed: dict[str, list[PlacedOpening]] = {}
-    for opening in [*scene.doors, *scene.windows]:
+    for opening in scene.openings:
         if isinstance(opening, Door):
             width, bottom = opening.effective_width, 0.0
             top = scene.wall_height if opening.kind == "open" else opening.height

@@ -143,7 +143,9 @@ def add_walls(
         )
         if wall.exterior:
             thick = scene.exterior_wall_thickness
-            sides = [(wall.rooms[0], _scale(wall.outward, thick / 2), thick)]
+            sides: list[tuple[str | None, tuple[float, float], float]] = [
+                (wall.rooms[0], _scale(wall.outward, thick / 2), thick)
+            ]
         else:
             half = scene.wall_thickness / 2
             right_room = next(r for r in wall.rooms if r != wall.left_room)

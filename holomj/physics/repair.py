@@ -30,7 +30,8 @@ from holomj.mjcf.compiler import CompiledScene, compile_spec
 from holomj.mjcf.objects import Furniture
 from holomj.physics.audit import GeomOwners, Overlap, find_overlaps
 from holomj.physics.scene_io import LoadedScene
-from holomj.physics.settle import ObjectTrack, Validation, run_validation
+from holomj.physics.settle import Validation, run_validation
+from holomj.physics.settling import ObjectTrack
 from holomj.spec.report import RepairAction, Thresholds, Unsaved
 from holomj.spec.scene import SceneObject, SceneSpec
 
@@ -124,64 +125,25 @@ def separate(
         raise InputError("only holomj scenes can be repaired", where=str(loaded.source))
     data = mujoco.MjData(model)
     owners = GeomOwners(model, loaded.objects)
-    track = ObjectTrack.of(model, loaded.objects)
-    body_pos = model.body_pos.copy()  # restored below: the model is not ours to keep
-    free_adr = {}
-    for joint in range(model.njnt):
-        if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
-            free_adr[int(model.jnt_bodyid[joint])] = int(model.jnt_qposadr[joint])
-    index = {o.id: i for i, o in enumerate(scene.objects)}
-    supports = {o.id: o.support for o in scene.objects}
-    why: dict[str, str] = {}
-    unsaved: dict[str, str] = {}
-    skipped: set[tuple[int, int]] = set()
-    limit = th.repair_max_m if max_move_m is None else max_move_m
-    stuck: set[int] = set()
-    last: dict[int, np.ndarray] = {}
     fixed_ids = {owners.names.index(name) for name in fixed if name in owners.names}
+    rounds = _Rounds(
+        owners,
+        ObjectTrack.of(model, loaded.objects),
+        {o.id: i for i, o in enumerate(scene.objects)},
+        {o.id: o.support for o in scene.objects},
+        fixed_ids,
+        th.tolerance_m,
+        th.repair_max_m if max_move_m is None else max_move_m,
+        push_rule,
+    )
+    body_pos = model.body_pos.copy()  # restored below: the model is not ours to keep
+    free_adr = _free_joint_addresses(model)
     try:
         for _ in range(MAX_ROUNDS):
             mujoco.mj_kinematics(model, data)
-            overlaps = [
-                o
-                for o in find_overlaps(model, data, owners, th.tolerance_m)
-                if (o.geom1, o.geom2) not in skipped
-            ]
-            if not overlaps:
-                break
-            pushes: dict[int, np.ndarray] = {}
-            for overlap in overlaps:  # deepest first
-                mover, push = _mover(owners, track, overlap, index, supports, fixed_ids, stuck)
-                if mover is None or mover in pushes:
-                    continue
-                name = owners.names[mover]
-                other = owners.label(
-                    overlap.geom1 if owners.geom_owner[overlap.geom2] == mover else overlap.geom2
-                )
-                push = push * (1.0 + 0.5 * th.tolerance_m / overlap.depth)
-                if push_rule is not None:
-                    ruled = push_rule(model, data, owners, overlap, mover, push)
-                    push = push if ruled is None else np.asarray(ruled, dtype=float)
-                if overlap.depth > limit or float(np.linalg.norm(push)) > limit + th.tolerance_m:
-                    skipped.add((overlap.geom1, overlap.geom2))
-                    needs = float(np.linalg.norm(push))
-                    extra = f", needs a move of {needs * 1000:.0f} mm" if push_rule else ""
-                    unsaved.setdefault(
-                        name,
-                        f"penetrates {other} by {overlap.depth * 1000:.1f} mm{extra} "
-                        f"(repairs up to {limit * 1000:.0f} mm)",
-                    )
-                    continue
-                pushes[mover] = push
-                why.setdefault(name, f"separated from {other}")
+            pushes = rounds.pushes(model, data)
             if not pushes:
                 break
-            for mover, push in pushes.items():
-                # pushed back the way it came last round: squeezed (between a wall and a
-                # neighbour, say); from now on the other party of its overlaps moves instead
-                if mover in last and float(np.dot(push, last[mover])) < 0.0:
-                    stuck.add(mover)
-            last = pushes
             for mover, push in pushes.items():
                 body = int(owners.object_bodies[mover])
                 if body in free_adr:
@@ -194,7 +156,7 @@ def separate(
                 for geom in (overlap.geom1, overlap.geom2):
                     if owners.geom_owner[geom] >= 0:
                         name = owners.names[owners.geom_owner[geom]]
-                        unsaved.setdefault(name, "still interpenetrating after repair")
+                        rounds.unsaved.setdefault(name, "still interpenetrating after repair")
         mujoco.mj_kinematics(model, data)
         positions = data.xpos[owners.object_bodies].copy()
     finally:
@@ -202,11 +164,86 @@ def separate(
     objects = []
     for obj in scene.objects:
         i = owners.names.index(obj.id)
-        if obj.id in why:
+        if obj.id in rounds.why:
             obj = obj.model_copy(update={"position": _clean_vec(positions[i])})
         objects.append(obj)
-    unsaved_list = [Unsaved(name=k, why=v) for k, v in sorted(unsaved.items())]
-    return _rebuilt(scene, objects), why, unsaved_list
+    unsaved_list = [Unsaved(name=k, why=v) for k, v in sorted(rounds.unsaved.items())]
+    return _rebuilt(scene, objects), rounds.why, unsaved_list
+
+
+def _free_joint_addresses(model: mujoco.MjModel) -> dict[int, int]:
+    """Body id -> qpos address of its free joint, for every body with one."""
+    return {
+        int(model.jnt_bodyid[joint]): int(model.jnt_qposadr[joint])
+        for joint in range(model.njnt)
+        if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE
+    }
+
+
+@dataclass
+class _Rounds:
+    """The pushes of each round of :func:`separate`, and what it found: why each object moved,
+    the objects it could not save, the pairs it gave up on and the squeezed movers."""
+
+    owners: GeomOwners
+    track: ObjectTrack
+    index: dict[str, int]
+    supports: dict[str, str | None]
+    fixed_ids: set[int]
+    tolerance_m: float
+    limit_m: float
+    push_rule: PushRule | None
+    why: dict[str, str] = field(default_factory=dict)
+    unsaved: dict[str, str] = field(default_factory=dict)
+    skipped: set[tuple[int, int]] = field(default_factory=set)
+    stuck: set[int] = field(default_factory=set)
+    last: dict[int, np.ndarray] = field(default_factory=dict)
+
+    def pushes(self, model: mujoco.MjModel, data: mujoco.MjData) -> dict[int, np.ndarray]:
+        """This round's push of each mover (object index), deepest overlap first; empty when
+        nothing is left to push."""
+        owners = self.owners
+        overlaps = [
+            o
+            for o in find_overlaps(model, data, owners, self.tolerance_m)
+            if (o.geom1, o.geom2) not in self.skipped
+        ]
+        pushes: dict[int, np.ndarray] = {}
+        for overlap in overlaps:  # deepest first
+            mover, push = _mover(
+                owners, self.track, overlap, self.index, self.supports, self.fixed_ids, self.stuck
+            )
+            if mover is None or mover in pushes:
+                continue
+            name = owners.names[mover]
+            other = owners.label(
+                overlap.geom1 if owners.geom_owner[overlap.geom2] == mover else overlap.geom2
+            )
+            push = push * (1.0 + 0.5 * self.tolerance_m / overlap.depth)
+            if self.push_rule is not None:
+                ruled = self.push_rule(model, data, owners, overlap, mover, push)
+                push = push if ruled is None else np.asarray(ruled, dtype=float)
+            limit = self.limit_m
+            if overlap.depth > limit or float(np.linalg.norm(push)) > limit + self.tolerance_m:
+                self.skipped.add((overlap.geom1, overlap.geom2))
+                needs = float(np.linalg.norm(push))
+                extra = f", needs a move of {needs * 1000:.0f} mm" if self.push_rule else ""
+                self.unsaved.setdefault(
+                    name,
+                    f"penetrates {other} by {overlap.depth * 1000:.1f} mm{extra} "
+                    f"(repairs up to {limit * 1000:.0f} mm)",
+                )
+                continue
+            pushes[mover] = push
+            self.why.setdefault(name, f"separated from {other}")
+        for mover, push in pushes.items():
+            # pushed back the way it came last round: squeezed (between a wall and a
+            # neighbour, say); from now on the other party of its overlaps moves instead
+            if mover in self.last and float(np.dot(push, self.last[mover])) < 0.0:
+                self.stuck.add(mover)
+        if pushes:
+            self.last = pushes
+        return pushes
 
 
 def _mover(
@@ -265,9 +302,9 @@ def bake(
 def _pose_fields(pos: np.ndarray, quat: np.ndarray) -> dict:
     """``position`` and ``yaw_deg`` (or ``quat`` when tilted) of a settled body."""
     quat = np.asarray(quat, dtype=float) / np.linalg.norm(quat)
-    rot = np.zeros(9)
-    mujoco.mju_quat2Mat(rot, quat)
-    rot = rot.reshape(3, 3)
+    flat = np.zeros(9)
+    mujoco.mju_quat2Mat(flat, quat)
+    rot = flat.reshape(3, 3)
     tilt = math.degrees(math.acos(min(1.0, max(-1.0, rot[2, 2]))))
     yaw = math.degrees(math.atan2(rot[1, 0], rot[0, 0]))
     fields: dict = {"position": _clean_vec(pos), "yaw_deg": round(yaw, 4)}

@@ -37,250 +37,17 @@ import numpy as np
 
 from holomj.physics.audit import AuditResult, GeomOwners, Rooms, audit, lowest_points
 from holomj.physics.scene_io import LoadedScene
-from holomj.physics.smoke import warning_counts
+from holomj.physics.settling import (
+    FIXED,
+    FLOOR,
+    ObjectTrack,
+    PartJoints,
+    SettleResult,
+    final_supports,
+    run_settle,
+)
 from holomj.spec.report import ObjectReport, StabilityReport, Thresholds
-
-FLOOR = "floor"
-FIXED = "fixed"
-_CHECK_EVERY = 10  # steps between rest checks while settling
-
-
-@dataclass(frozen=True)
-class PartJoints:
-    """The hinge and slide joints of the objects' moving parts (doors, drawers, lids)."""
-
-    owner: np.ndarray  # object index per joint
-    joint: np.ndarray  # joint id
-    qpos: np.ndarray  # qpos address
-    dof: np.ndarray  # dof address
-    hinge: np.ndarray  # bool: hinge (radians) or slide (metres)
-
-    @classmethod
-    def of(cls, model: mujoco.MjModel, owners: GeomOwners) -> PartJoints:
-        kinds = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
-        roots = set(owners.object_bodies.tolist())
-        joints = [
-            j
-            for j in range(model.njnt)
-            if int(model.jnt_type[j]) in kinds
-            and owners.body_owner[model.jnt_bodyid[j]] >= 0
-            and int(model.jnt_bodyid[j]) not in roots
-        ]
-        ids = np.array(joints, dtype=int)
-        return cls(
-            owner=owners.body_owner[model.jnt_bodyid[ids]] if ids.size else ids,
-            joint=ids,
-            qpos=model.jnt_qposadr[ids] if ids.size else ids,
-            dof=model.jnt_dofadr[ids] if ids.size else ids,
-            hinge=(model.jnt_type[ids] == int(mujoco.mjtJoint.mjJNT_HINGE))
-            if ids.size
-            else np.zeros(0, dtype=bool),
-        )
-
-    def __len__(self) -> int:
-        return int(self.joint.size)
-
-    def at_rest(self, data: mujoco.MjData, th: Thresholds) -> bool:
-        """Every part slower than the rest thresholds (rad/s for hinges, m/s for slides)."""
-        if not len(self):
-            return True
-        speed = np.abs(data.qvel[self.dof])
-        limit = np.where(self.hinge, th.rest_angular_rps, th.rest_linear_mps)
-        return bool(np.all(speed < limit))
-
-    def departures(self, start: np.ndarray, end: np.ndarray) -> np.ndarray:
-        """How far each joint ends from its start: degrees for hinges, metres for slides."""
-        delta = np.abs(end[self.qpos] - start[self.qpos])
-        return np.where(self.hinge, np.degrees(delta), delta)
-
-
-@dataclass
-class ObjectTrack:
-    """Index arrays of the objects' bodies and (for free bodies) their velocity dofs."""
-
-    owners: GeomOwners
-    dynamic: np.ndarray  # bool per object
-    lin_dofs: np.ndarray  # (n_dynamic, 3)
-    ang_dofs: np.ndarray  # (n_dynamic, 3)
-    parts: PartJoints | None = None  # the moving parts' joints
-
-    @classmethod
-    def of(cls, model: mujoco.MjModel, objects: dict[str, int]) -> ObjectTrack:
-        owners = GeomOwners(model, objects)
-        free_dof = {}
-        for joint in range(model.njnt):
-            if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
-                free_dof[int(model.jnt_bodyid[joint])] = int(model.jnt_dofadr[joint])
-        bodies = owners.object_bodies
-        dynamic = np.array([int(b) in free_dof for b in bodies], dtype=bool)
-        adr = np.array([free_dof[int(b)] for b in bodies[dynamic]], dtype=int)
-        lin = adr[:, None] + np.arange(3) if adr.size else np.zeros((0, 3), dtype=int)
-        ang = adr[:, None] + np.arange(3, 6) if adr.size else np.zeros((0, 3), dtype=int)
-        return cls(owners, dynamic, lin, ang, PartJoints.of(model, owners))
-
-    def speeds(self, data: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
-        """Linear (m/s) and angular (rad/s) speed of each free object."""
-        qvel = data.qvel
-        return (
-            np.linalg.norm(qvel[self.lin_dofs], axis=1),
-            np.linalg.norm(qvel[self.ang_dofs], axis=1),
-        )
-
-    def at_rest(self, data: mujoco.MjData, th: Thresholds) -> np.ndarray:
-        """Per free object: slower than the rest thresholds."""
-        lin, ang = self.speeds(data)
-        return (lin < th.rest_linear_mps) & (ang < th.rest_angular_rps)
-
-
-@dataclass
-class SettleResult:
-    """The raw outcome of settle + monitor, before judging."""
-
-    data: mujoco.MjData
-    start_pos: np.ndarray  # object centres of mass at t = 0 (the authored pose)
-    start_quat: np.ndarray  # object body orientations at t = 0
-    start_qpos: np.ndarray  # joint values at t = 0 (the moving parts' authored values)
-    monitor_pos: np.ndarray  # centres of mass at the start of the monitor window
-    monitor_quat: np.ndarray
-    path: np.ndarray  # path length of the centre of mass over the monitor window
-    penetration: np.ndarray  # deepest contact during the monitor window (>= 0)
-    settle_time: float
-    settled: bool
-    sim_time: float
-    wall_time: float
-    warnings: dict[str, int]
-
-
-def run_settle(
-    model: mujoco.MjModel, track: ObjectTrack, th: Thresholds, sleep: bool = False
-) -> SettleResult:
-    """Settle from the initial pose, then monitor; see the module docstring.
-
-    ``sleep`` turns on MuJoCo's sleeping islands for this run (``model`` is restored after):
-    much faster on big scenes once they rest, but a body asleep cannot creep, so drift slower
-    than MuJoCo's ``sleep_tolerance`` goes unseen.
-    """
-    flags = model.opt.enableflags
-    if sleep:
-        model.opt.enableflags = flags | mujoco.mjtEnableBit.mjENBL_SLEEP
-    try:
-        result = _run_settle(model, track, th)
-    finally:
-        model.opt.enableflags = flags
-    # The final state, recomputed awake: contacts and forces of every body (sleeping bodies
-    # have none), for supports and the deepest contact.
-    final = mujoco.MjData(model)
-    final.qpos[:] = result.data.qpos
-    final.qvel[:] = result.data.qvel
-    final.time = result.data.time
-    mujoco.mj_forward(model, final)
-    _deepest_contacts(final, track.owners.geom_owner, result.penetration)
-    result.warnings = _merge(result.warnings, warning_counts(final))
-    result.data = final
-    return result
-
-
-def _merge(a: dict[str, int], b: dict[str, int]) -> dict[str, int]:
-    return {k: a.get(k, 0) + b.get(k, 0) for k in sorted(set(a) | set(b))}
-
-
-def _deepest_contacts(data: mujoco.MjData, geom_owner: np.ndarray, deepest: np.ndarray) -> None:
-    """Raise ``deepest`` (per object) to the depth of the contacts in ``data``."""
-    ncon = data.ncon
-    if not ncon:
-        return
-    depth = -data.contact.dist[:ncon]
-    pairs = data.contact.geom[:ncon]
-    for column in (0, 1):
-        owner = geom_owner[pairs[:, column]]
-        mine = owner >= 0
-        np.maximum.at(deepest, owner[mine], depth[mine])
-
-
-def _run_settle(model: mujoco.MjModel, track: ObjectTrack, th: Thresholds) -> SettleResult:
-    started = time.perf_counter()
-    data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)
-    bodies = track.owners.object_bodies
-    start_pos = data.xipos[bodies].copy()
-    start_quat = data.xquat[bodies].copy()
-    start_qpos = data.qpos.copy()
-    parts = track.parts
-    dt = model.opt.timestep
-    cap_steps = round(th.settle_cap_s / dt)
-    window_steps = max(1, round(th.rest_window_s / dt))
-    quiet_since = 0 if not track.dynamic.any() and not parts else None
-    steps = 0
-    while steps < cap_steps:
-        if quiet_since is not None and steps - quiet_since >= window_steps:
-            break
-        for _ in range(min(_CHECK_EVERY, cap_steps - steps)):
-            mujoco.mj_step(model, data)
-        steps += min(_CHECK_EVERY, cap_steps - steps)
-        if track.at_rest(data, th).all() and (parts is None or parts.at_rest(data, th)):
-            quiet_since = steps if quiet_since is None else quiet_since
-        else:
-            quiet_since = None
-    settled = quiet_since is not None and steps - quiet_since >= window_steps
-    settle_time = steps * dt
-
-    geom_owner = track.owners.geom_owner
-    n = len(bodies)
-    monitor_pos = data.xipos[bodies].copy()
-    monitor_quat = data.xquat[bodies].copy()
-    previous = monitor_pos.copy()
-    path = np.zeros(n)
-    deepest = np.zeros(n)
-    for _ in range(round(th.monitor_s / dt)):
-        mujoco.mj_step(model, data)
-        current = data.xipos[bodies]
-        path += np.linalg.norm(current - previous, axis=1)
-        previous = current.copy()
-        _deepest_contacts(data, geom_owner, deepest)
-    return SettleResult(
-        data=data,
-        start_pos=start_pos,
-        start_quat=start_quat,
-        start_qpos=start_qpos,
-        monitor_pos=monitor_pos,
-        monitor_quat=monitor_quat,
-        path=path,
-        penetration=deepest,
-        settle_time=settle_time,
-        settled=settled,
-        sim_time=data.time,
-        wall_time=time.perf_counter() - started,
-        warnings=warning_counts(data),
-    )
-
-
-def final_supports(model: mujoco.MjModel, data: mujoco.MjData, owners: GeomOwners) -> list[str]:
-    """What each object rests on: the thing below it pushing up hardest, from the contacts of
-    ``data`` (after ``mj_forward``). ``floor`` for the ground and structure, ``""`` when
-    nothing holds it up."""
-    push: dict[tuple[int, str], float] = {}
-    force = np.zeros(6)
-    for k in range(data.ncon):
-        contact = data.contact[k]
-        if contact.efc_address < 0:
-            continue
-        mujoco.mj_contactForce(model, data, k, force)
-        normal_z = contact.frame[2]  # the normal points from geom1 to geom2
-        g1, g2 = int(contact.geom[0]), int(contact.geom[1])
-        for me, other, sign in ((g1, g2, -1.0), (g2, g1, 1.0)):
-            owner = int(owners.geom_owner[me])
-            if owner < 0 or owners.geom_owner[other] == owner:
-                continue
-            up = force[0] * normal_z * sign
-            if up <= 0.0:
-                continue
-            label = owners.names[o] if (o := int(owners.geom_owner[other])) >= 0 else FLOOR
-            push[(owner, label)] = push.get((owner, label), 0.0) + up
-    best: dict[int, tuple[float, str]] = {}
-    for (owner, label), value in sorted(push.items()):
-        if owner not in best or value > best[owner][0]:
-            best[owner] = (value, label)
-    return [best[i][1] if i in best else "" for i in range(len(owners.names))]
+from holomj.spec.scene import SceneObject
 
 
 def quat_angle_deg(q1: np.ndarray, q2: np.ndarray) -> np.ndarray:
@@ -348,59 +115,31 @@ def judge(
     at_rest = np.ones(len(bodies), dtype=bool)
     at_rest[track.dynamic] = track.at_rest(data, th)
     scene_objects = {o.id: o for o in loaded.scene.objects} if loaded.scene else {}
-    rooms = Rooms(loaded.scene, th.room_margin_m) if loaded.scene else None
-    inside = {}
-    if rooms is not None:
-        for i, name in enumerate(owners.names):
-            room = scene_objects[name].room if name in scene_objects else None
-            inside[name] = bool(rooms.inside(end_pos[i : i + 1, :2], room)[0])
+    inside = _inside_rooms(loaded, owners, scene_objects, end_pos, th)
     motion = _part_motion(model, track.parts, result.start_qpos, data.qpos, len(bodies))
     reports = []
     for i, name in enumerate(owners.names):
         dynamic = bool(track.dynamic[i])
         spec = scene_objects.get(name)
-        expected = (spec.support or FLOOR) if spec is not None else None
-        support = (supports[i] or None) if dynamic else FIXED
-        fell = bool(drop[i] > th.fall_m or lowest[i] < -th.below_floor_m)
-        left_room = bool(rooms is not None and not inside[name])
-        reasons = []
-        # (a) at rest over the monitor window
-        if drift[i] >= th.drift_m:
-            reasons.append(f"drifted {drift[i] * 1000:.1f} mm during the monitor window")
-        if rotation[i] >= th.rotation_deg:
-            reasons.append(f"turned {rotation[i]:.1f}° during the monitor window")
-        # (b) close to the authored pose
-        if displacement[i] >= th.displacement_m:
-            reasons.append(f"ended {displacement[i] * 1000:.1f} mm from its authored position")
-        if turned[i] >= th.rotation_from_authored_deg:
-            reasons.append(f"ended {turned[i]:.1f}° from its authored orientation")
-        if fell:
-            reasons.append(
-                f"fell {drop[i]:.3f} m" if drop[i] > th.fall_m else "fell through the floor"
-            )
-        # (c) no penetration at t = 0, in its place, on its support
-        if penetration[i] > th.tolerance_m:
-            other, depth = partners.get(name, ("something", float(penetration[i])))
-            reasons.append(f"penetrates {other} by {depth * 1000:.1f} mm at t = 0")
-        if name in below_floor_at_start:
-            reasons.append("below the floor at t = 0")
-        if name in outside_at_start:
-            reasons.append("outside every room at t = 0")
-        if left_room:
-            room = spec.room if spec is not None and spec.room else None
-            reasons.append(f"left room {room}" if room else "ended outside every room")
-        if dynamic and expected is not None and support != expected:
-            reasons.append(f"rests on {support or 'nothing'}, expected {expected}")
-        if dynamic and result.warnings:
-            reasons.append("MuJoCo warnings: " + ", ".join(sorted(result.warnings)))
-        # (d) moving parts where they were authored
-        for joint, (value, hinge) in motion[i].items():
-            if hinge and value >= th.part_rotation_deg:
-                reasons.append(f"{joint} swung {value:.1f}° from its authored angle by itself")
-            elif not hinge and value >= th.part_travel_m:
-                reasons.append(
-                    f"{joint} slid {value * 1000:.1f} mm from its authored position by itself"
-                )
+        numbers = _ObjectNumbers(
+            drift=float(drift[i]),
+            rotation=float(rotation[i]),
+            displacement=float(displacement[i]),
+            turned=float(turned[i]),
+            drop=float(drop[i]),
+            fell=bool(drop[i] > th.fall_m or lowest[i] < -th.below_floor_m),
+            penetration=float(penetration[i]),
+            partner=partners.get(name, ("something", float(penetration[i]))),
+            below_floor=name in below_floor_at_start,
+            outside=name in outside_at_start,
+            left_room=inside is not None and not inside[name],
+            room=spec.room if spec is not None and spec.room else None,
+            dynamic=dynamic,
+            support=(supports[i] or None) if dynamic else FIXED,
+            expected=(spec.support or FLOOR) if spec is not None else None,
+            motion=motion[i],
+        )
+        reasons = numbers.reasons(th, result.warnings)
         reports.append(
             ObjectReport(
                 name=name,
@@ -412,10 +151,10 @@ def judge(
                 rotation_deg=_r(rotation[i], 4),
                 path_m=_r(result.path[i]),
                 drop_m=_r(drop[i]),
-                fell=fell,
-                left_room=left_room,
-                support=support,
-                expected_support=expected,
+                fell=numbers.fell,
+                left_room=numbers.left_room,
+                support=numbers.support,
+                expected_support=numbers.expected,
                 penetration_m=_r(penetration[i]),
                 contact_depth_m=_r(result.penetration[i]),
                 at_rest=bool(at_rest[i]),
@@ -424,6 +163,88 @@ def judge(
             )
         )
     return reports
+
+
+def _inside_rooms(
+    loaded: LoadedScene,
+    owners: GeomOwners,
+    scene_objects: dict[str, SceneObject],
+    end_pos: np.ndarray,
+    th: Thresholds,
+) -> dict[str, bool] | None:
+    """Per object name: whether it ended inside its room (any room when it names none); None
+    for a model without a holomj scene."""
+    if not loaded.scene:
+        return None
+    rooms = Rooms(loaded.scene, th.room_margin_m)
+    inside = {}
+    for i, name in enumerate(owners.names):
+        room = scene_objects[name].room if name in scene_objects else None
+        inside[name] = bool(rooms.inside(end_pos[i : i + 1, :2], room)[0])
+    return inside
+
+
+@dataclass(frozen=True)
+class _ObjectNumbers:
+    """One object's measured numbers and facts, which :meth:`reasons` judges."""
+
+    drift: float
+    rotation: float
+    displacement: float
+    turned: float
+    drop: float
+    fell: bool
+    penetration: float
+    partner: tuple[str, float]  # the other party of its deepest pair at t = 0, and the depth
+    below_floor: bool
+    outside: bool
+    left_room: bool
+    room: str | None
+    dynamic: bool
+    support: str | None
+    expected: str | None
+    motion: dict[str, tuple[float, bool]]
+
+    def reasons(self, th: Thresholds, warnings: dict[str, int]) -> list[str]:
+        """Why the object is not stable (empty: it is), in the order of ``STABILITY_RULE``."""
+        reasons = []
+        # (a) at rest over the monitor window
+        if self.drift >= th.drift_m:
+            reasons.append(f"drifted {self.drift * 1000:.1f} mm during the monitor window")
+        if self.rotation >= th.rotation_deg:
+            reasons.append(f"turned {self.rotation:.1f}° during the monitor window")
+        # (b) close to the authored pose
+        if self.displacement >= th.displacement_m:
+            reasons.append(f"ended {self.displacement * 1000:.1f} mm from its authored position")
+        if self.turned >= th.rotation_from_authored_deg:
+            reasons.append(f"ended {self.turned:.1f}° from its authored orientation")
+        if self.fell:
+            reasons.append(
+                f"fell {self.drop:.3f} m" if self.drop > th.fall_m else "fell through the floor"
+            )
+        # (c) no penetration at t = 0, in its place, on its support
+        if self.penetration > th.tolerance_m:
+            other, depth = self.partner
+            reasons.append(f"penetrates {other} by {depth * 1000:.1f} mm at t = 0")
+        if self.below_floor:
+            reasons.append("below the floor at t = 0")
+        if self.outside:
+            reasons.append("outside every room at t = 0")
+        if self.left_room:
+            reasons.append(f"left room {self.room}" if self.room else "ended outside every room")
+        if self.dynamic and self.expected is not None and self.support != self.expected:
+            reasons.append(f"rests on {self.support or 'nothing'}, expected {self.expected}")
+        if self.dynamic and warnings:
+            reasons.append("MuJoCo warnings: " + ", ".join(sorted(warnings)))
+        # (d) moving parts where they were authored
+        for joint, (value, hinge) in self.motion.items():
+            if hinge and value >= th.part_rotation_deg:
+                reasons.append(f"{joint} swung {value:.1f}° from its authored angle by itself")
+            elif not hinge and value >= th.part_travel_m:
+                reasons.append(
+                    f"{joint} slid {value * 1000:.1f} mm from its authored position by itself"
+                )
+        return reasons
 
 
 def _part_motion(

@@ -48,13 +48,15 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from shapely.geometry import Point, Polygon
 
-from holomj.errors import InputError, closest_names
+from holomj.errors import InputError
 from holomj.library.store import AssetLibrary, LibraryAsset
 from holomj.mjcf import names
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.mjcf.geometry import yaw_quat
 from holomj.physics.drop_world import DropWorld, Outcome
+from holomj.physics.spawn_requests import find_object, resolve_request
 from holomj.physics.surfaces_world import (
     SurfaceSampler,
     WorldSurface,
@@ -168,23 +170,9 @@ def populate(
     """
     start = time.perf_counter()
     _check_numbers(max_attempts, drop_height, settle_s, batch)
-    receptacle = find_object(scene, receptacle_id)
-    rec_asset = library.get(receptacle.asset)
-    surfaces = world_surfaces(receptacle, rec_asset.meta)
-    interior = world_interior_surfaces(receptacle, rec_asset.meta)
-    if (requests or not inside) and not surfaces:
-        raise InputError(
-            f"object {receptacle_id!r} (asset {rec_asset.meta.id!r}) has no support surfaces",
-            where="--on",
-            fix="choose a table, desk, shelf or other receptacle",
-        )
-    if inside and not interior:
-        raise InputError(
-            f"object {receptacle_id!r} (asset {rec_asset.meta.id!r}) has nothing to put things "
-            "inside (no interior surfaces)",
-            where="--on",
-            fix="choose an articulated cabinet, drawer unit, fridge or other storage",
-        )
+    receptacle, surfaces, interior = _receptacle_surfaces(
+        scene, library, receptacle_id, bool(requests), bool(inside)
+    )
     jobs = _make_jobs(scene, library, requests, rng)
     if inside:
         jobs += _make_jobs(scene, library, inside, rng, inside=True, first=jobs)
@@ -222,23 +210,38 @@ def populate(
         for job, p in zip(jobs, placements)
         if p.accepted and p.final_pose is not None
     ]
-    result_scene = scene.model_copy(update={"objects": [*scene.objects, *new_objects]})
-    result_scene = SceneSpec.model_validate(result_scene.model_dump())
+    populated = scene.model_copy(update={"objects": [*scene.objects, *new_objects]})
     return PopulateResult(
-        scene=result_scene,
+        scene=SceneSpec.model_validate(populated.model_dump()),
         placements=placements,
         receptacle_drift_m=float(np.linalg.norm(rec_end - rec_start)),
         seconds=time.perf_counter() - start,
     )
 
 
-def merge_libraries(*libraries: AssetLibrary) -> AssetLibrary:
-    """One read-only view of several libraries; the first that holds an id wins."""
-    assets: dict[str, LibraryAsset] = {}
-    for library in reversed(libraries):
-        assets.update({asset_id: library.get(asset_id) for asset_id in library.ids()})
-    first = libraries[0]
-    return AssetLibrary(first.root, " + ".join(lib.name for lib in libraries), assets)
+def _receptacle_surfaces(
+    scene: SceneSpec, library: AssetLibrary, receptacle_id: str, requests: bool, inside: bool
+) -> tuple[SceneObject, list[WorldSurface], list[WorldSurface]]:
+    """The receptacle, its support surfaces and its interior ones (world frame); an InputError
+    when it has none of the kind the requests (on it) or ``inside`` requests (in it) need."""
+    receptacle = find_object(scene, receptacle_id)
+    rec_asset = library.get(receptacle.asset)
+    surfaces = world_surfaces(receptacle, rec_asset.meta)
+    interior = world_interior_surfaces(receptacle, rec_asset.meta)
+    if (requests or not inside) and not surfaces:
+        raise InputError(
+            f"object {receptacle_id!r} (asset {rec_asset.meta.id!r}) has no support surfaces",
+            where="--on",
+            fix="choose a table, desk, shelf or other receptacle",
+        )
+    if inside and not interior:
+        raise InputError(
+            f"object {receptacle_id!r} (asset {rec_asset.meta.id!r}) has nothing to put things "
+            "inside (no interior surfaces)",
+            where="--on",
+            fix="choose an articulated cabinet, drawer unit, fridge or other storage",
+        )
+    return receptacle, surfaces, interior
 
 
 def default_threads(batch: int) -> int:
@@ -257,46 +260,6 @@ def _check_numbers(max_attempts: int, drop_height: float, settle_s: float, batch
     for ok, message in checks:
         if not ok:
             raise InputError(message)
-
-
-def find_object(scene: SceneSpec, object_id: str) -> SceneObject:
-    """The scene's object ``object_id``; an :class:`InputError` naming ``--on`` (with the
-    closest ids) when there is none."""
-    for obj in scene.objects:
-        if obj.id == object_id:
-            return obj
-    near = closest_names(object_id, [o.id for o in scene.objects])
-    raise InputError(
-        f"the scene has no object {object_id!r}",
-        where="--on",
-        fix=f"did you mean: {near}" if near else _listing("objects", [o.id for o in scene.objects]),
-    )
-
-
-def _listing(kind: str, names: list[str], limit: int = 12) -> str:
-    """``objects: a, b, c`` (sorted, at most ``limit``, then ``... (N in all)``)."""
-    if not names:
-        return f"there are no {kind}"
-    shown = sorted(names)[:limit]
-    more = f", ... ({len(names)} in all)" if len(names) > limit else ""
-    return f"{kind}: {', '.join(shown)}{more}"
-
-
-def resolve_request(library: AssetLibrary, name: str, rng: np.random.Generator) -> LibraryAsset:
-    """The asset for a request: an asset id as is, else one of the category's small objects."""
-    if name in library:
-        return library.get(name)
-    candidates = [a for a in library.by_category(name) if "object" in a.meta.placement]
-    if not candidates:
-        metas = [library.get(i).meta for i in library.ids()]
-        known = sorted({m.category for m in metas if "object" in m.placement})
-        near = closest_names(name, known) or closest_names(name, library.ids())
-        raise InputError(
-            f"no small-object asset or category {name!r} in the library",
-            where="objects",
-            fix=f"did you mean: {near}" if near else _listing("small-object categories", known),
-        )
-    return candidates[int(rng.integers(len(candidates)))]
 
 
 def _surface_bodies(
@@ -325,7 +288,7 @@ def _make_jobs(
     before = first or []
     taken = {o.id for o in scene.objects} | {j.object_id for j in before}
     counters: Counter[str] = Counter()
-    jobs = []
+    jobs: list[_Job] = []
     for name, count in requests:
         if count < 0 or count > 1000:
             raise InputError(f"count {count} for {name!r} must lie in [0, 1000]", where="objects")
@@ -391,7 +354,7 @@ def _place_one(
     ]
     samplers = [s for s in samplers if s.feasible]
     if not samplers:
-        return _failure(job, 0, "no surface is large or high enough for it", Counter(), start)
+        return _placement(job, 0, "no surface is large or high enough for it", Counter(), start)
     weights = np.array([s.surface.area for s in samplers])
     weights = weights / weights.sum()
     before = {oid: world.pose(oid)[0] for oid in placed}
@@ -407,18 +370,11 @@ def _place_one(
         rounds += 1
         while attempts < max_attempts and len(pending) < width:
             attempts += 1
-            sampler = samplers[int(rng.choice(len(samplers), p=weights))]
-            pose = sampler.sample(rng)
-            if pose is None:
-                tried.append((attempts, "no free footprint on the surface"))
-                continue
-            x, y, yaw = pose
-            pos = np.array([x, y, sampler.surface.height + drop_height])
-            state = world.candidate_state(job.object_id, pos, np.array(yaw_quat(yaw)))
-            if world.spawn_collision(job.object_id, state) is not None:
-                tried.append((attempts, "collides at spawn"))
-                continue
-            pending.append((attempts, sampler, state))
+            candidate = _candidate(world, job.object_id, samplers, weights, rng, drop_height)
+            if isinstance(candidate, str):
+                tried.append((attempts, candidate))
+            else:
+                pending.append((attempts, *candidate))
         if not pending:
             continue
         verdicts = world.drop(
@@ -447,21 +403,35 @@ def _place_one(
             rejections = Counter(r for n, r in tried if n < number)
             world.commit(job.object_id, outcome.state)
             lift = min(world.penetration(job.object_id), LIFT_CAP_M)
-            return Placement(
-                object_id=job.object_id,
-                asset=meta.id,
-                surface_index=sampler.surface.index,
-                attempts=number,
-                accepted=True,
-                reason="placed",
-                final_pose=_final_pose(outcome, lift, sampler.surface.height),
-                seconds=round(time.perf_counter() - start, 4),
-                rejections=dict(sorted(rejections.items())),
-                inside=job.inside,
+            final_pose = _final_pose(outcome, lift, sampler.surface.height)
+            return _placement(
+                job, number, "placed", rejections, start, (sampler.surface.index, final_pose)
             )
     world.park(job.object_id)
     rejections = Counter(r for _, r in tried)
-    return _failure(job, attempts, _failure_reason(rejections), rejections, start)
+    return _placement(job, attempts, _failure_reason(rejections), rejections, start)
+
+
+def _candidate(
+    world: DropWorld,
+    object_id: str,
+    samplers: list[SurfaceSampler],
+    weights: np.ndarray,
+    rng: np.random.Generator,
+    drop_height: float,
+) -> tuple[SurfaceSampler, np.ndarray] | str:
+    """A spawn state for ``object_id`` on a surface drawn by area (with its sampler), or why
+    the draw was rejected before dropping."""
+    sampler = samplers[int(rng.choice(len(samplers), p=weights))]
+    pose = sampler.sample(rng)
+    if pose is None:
+        return "no free footprint on the surface"
+    x, y, yaw = pose
+    pos = np.array([x, y, sampler.surface.height + drop_height])
+    state = world.candidate_state(object_id, pos, np.array(yaw_quat(yaw)))
+    if world.spawn_collision(object_id, state) is not None:
+        return "collides at spawn"
+    return sampler, state
 
 
 def _judge_candidate(
@@ -473,32 +443,38 @@ def _judge_candidate(
     k: int,
     outcome: Outcome,
 ) -> str | None:
-    return _judge(world, outcome, surfaces[k], bodies[surfaces[k].part], upright, before)
+    surface = surfaces[k]
+    return landing_problem(
+        world, outcome, surface.polygon, surface.height, bodies[surface.part], upright, before
+    )
 
 
-def _judge(
+def landing_problem(
     world: DropWorld,
     outcome: Outcome,
-    surface: WorldSurface,
+    polygon: Polygon,
+    surface_z: float | None,
     rec_body: int,
     upright: bool,
     before: dict[str, np.ndarray],
+    receptacle: str = "the receptacle",
 ) -> str | None:
-    """Why a dropped candidate is rejected, or None when it is accepted."""
-    from shapely.geometry import Point
-
-    placed_bodies = {world.bodies[object_id].body for object_id in before}
+    """Why a dropped object's outcome is rejected (the rule of spawn-and-drop), or None when it
+    is accepted: it must stay finite, not end more than ``FALL_TOL_M`` below ``surface_z``
+    (None: no such check), be at rest, stand over ``polygon``, touch ``rec_body`` and no
+    object placed before, be upright when ``upright``, and leave those objects (``before``:
+    their positions) where they were. ``receptacle`` names the receptacle in the reasons."""
     if not outcome.finite:
         return "simulation diverged"
-    if outcome.position[2] < surface.height - FALL_TOL_M:
+    if surface_z is not None and outcome.position[2] < surface_z - FALL_TOL_M:
         return "fell off"
     if outcome.speed > REST_SPEED or outcome.spin > REST_SPIN:
         return "still moving"
-    if not surface.polygon.contains(Point(outcome.position[0], outcome.position[1])):
+    if not polygon.contains(Point(float(outcome.position[0]), float(outcome.position[1]))):
         return "off the surface"
     if rec_body not in outcome.touches:
-        return "not resting on the receptacle"
-    if outcome.touches & placed_bodies:
+        return f"not resting on {receptacle}"
+    if outcome.touches & {world.bodies[object_id].body for object_id in before}:
         return "leans on another object"
     if upright and outcome.tilt_deg > UPRIGHT_TOL_DEG:
         return "not upright"
@@ -524,17 +500,24 @@ def _failure_reason(rejections: Counter[str]) -> str:
     return dropped.most_common(1)[0][0]
 
 
-def _failure(
-    job: _Job, attempts: int, reason: str, rejections: Counter[str], start: float
+def _placement(
+    job: _Job,
+    attempts: int,
+    reason: str,
+    rejections: Counter[str],
+    start: float,
+    accepted: tuple[int, dict[str, Any]] | None = None,
 ) -> Placement:
+    """The outcome of placing ``job``; ``accepted``: the surface index and final pose of the
+    candidate that came to rest (None: none did, for ``reason``)."""
     return Placement(
         object_id=job.object_id,
         asset=job.asset.meta.id,
-        surface_index=None,
+        surface_index=accepted[0] if accepted else None,
         attempts=attempts,
-        accepted=False,
+        accepted=accepted is not None,
         reason=reason,
-        final_pose=None,
+        final_pose=accepted[1] if accepted else None,
         seconds=round(time.perf_counter() - start, 4),
         rejections=dict(sorted(rejections.items())),
         inside=job.inside,
@@ -574,7 +557,6 @@ def _scene_object(job: _Job, placement: Placement, receptacle: SceneObject) -> S
 __all__ = [
     "Placement",
     "PopulateResult",
-    "merge_libraries",
     "object_yaw",
     "populate",
     "resolve_request",

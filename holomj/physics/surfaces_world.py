@@ -11,6 +11,7 @@ table are not supports).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,19 +51,14 @@ def object_yaw(obj: SceneObject) -> float:
 
 def world_surfaces(obj: SceneObject, meta: AssetMeta) -> list[WorldSurface]:
     """The receptacle's support surfaces, scaled and placed at the object's pose."""
-    sx, sy, sz = obj.scale3
-    yaw = object_yaw(obj)
-    px, py, pz = obj.position
+    sz = obj.scale3[2]
+    pz = obj.position[2]
     heights = sorted(s.height * sz for s in meta.surfaces)
     surfaces = []
     for index, surface in enumerate(meta.surfaces):
-        poly = Polygon([(x * sx, y * sy) for x, y in surface.polygon])
-        if not poly.is_valid:
-            poly = poly.buffer(0)
-        if poly.is_empty or poly.geom_type != "Polygon":
+        poly = _placed_outline(obj, surface.polygon)
+        if poly is None:
             continue
-        poly = affinity.rotate(poly, yaw, origin=(0.0, 0.0), use_radians=True)
-        poly = orient(affinity.translate(poly, px, py), 1.0)
         height = surface.height * sz
         above = [h for h in heights if h > height + 1e-6]
         clearance = (min(above) - height) if above else math.inf
@@ -76,18 +72,13 @@ def world_interior_surfaces(obj: SceneObject, meta: AssetMeta) -> list[WorldSurf
     asset."""
     if meta.articulation is None:
         return []
-    sx, sy, sz = obj.scale3
-    yaw = object_yaw(obj)
-    px, py, pz = obj.position
+    sz = obj.scale3[2]
+    pz = obj.position[2]
     surfaces = []
     for index, surface in enumerate(meta.articulation.interior):
-        poly = Polygon([(x * sx, y * sy) for x, y in surface.polygon])
-        if not poly.is_valid:
-            poly = poly.buffer(0)
-        if poly.is_empty or poly.geom_type != "Polygon":
+        poly = _placed_outline(obj, surface.polygon)
+        if poly is None:
             continue
-        poly = affinity.rotate(poly, yaw, origin=(0.0, 0.0), use_radians=True)
-        poly = orient(affinity.translate(poly, px, py), 1.0)
         clearance = surface.clearance_m * sz if surface.clearance_m is not None else math.inf
         surfaces.append(
             WorldSurface(
@@ -95,6 +86,19 @@ def world_interior_surfaces(obj: SceneObject, meta: AssetMeta) -> list[WorldSurf
             )
         )
     return surfaces
+
+
+def _placed_outline(obj: SceneObject, outline: Sequence[Sequence[float]]) -> Polygon | None:
+    """A surface outline in the asset frame scaled, turned and moved to the object's pose
+    (counter-clockwise); None when it is empty or falls apart."""
+    sx, sy, _ = obj.scale3
+    poly = Polygon([(x * sx, y * sy) for x, y in outline])
+    if not poly.is_valid:
+        poly = poly.buffer(0)
+    if poly.is_empty or poly.geom_type != "Polygon":
+        return None
+    poly = affinity.rotate(poly, object_yaw(obj), origin=(0.0, 0.0), use_radians=True)
+    return orient(affinity.translate(poly, obj.position[0], obj.position[1]), 1.0)
 
 
 def footprint(meta: AssetMeta, scale: tuple[float, float, float]) -> tuple[float, float]:

@@ -63,7 +63,7 @@ def segmentation_labels(model: mujoco.MjModel, scene: SceneSpec) -> Labels:
     entries += [(w.id, "window") for w in scene.windows]
     structure = {name: k for k, (name, kind) in enumerate(entries) if kind == "structure"}
     things = {name: k for k, (name, kind) in enumerate(entries) if kind not in STRUCTURE_KINDS}
-    legend = [
+    legend: list[dict[str, object]] = [
         {"label": k, "name": name, "kind": kind, "color": label_color(k)}
         for k, (name, kind) in enumerate(entries)
     ]

@@ -54,11 +54,12 @@ def openings(scene: SceneSpec) -> list[Opening]:
     """Every door and window of ``scene`` as a segment on the wall it sits in."""
     walls = scene.walls
     result = []
-    for item in [*scene.doors, *scene.windows]:
-        is_door = isinstance(item, Door)
-        width = item.effective_width if is_door else item.width
+    for item in scene.openings:
+        if isinstance(item, Door):
+            width, kind = item.effective_width, "door"
+        else:
+            width, kind = item.width, "window"
         wall, t = find_wall_for_opening(walls, item.rooms, item.position, width)
-        kind = "door" if is_door else "window"
         start, end = wall.point_at(t - width / 2), wall.point_at(t + width / 2)
         result.append(Opening(item.id, kind, start, end))
     return result

@@ -31,9 +31,10 @@ from pathlib import Path
 from typing import Any
 
 from holomj.library.store import AssetLibrary
+from holomj.rendering.report_objects import object_facts, object_table
 from holomj.spec.plan import ScenePlan
-from holomj.spec.report import ObjectReport, StabilityReport
-from holomj.spec.scene import SceneObject, SceneSpec
+from holomj.spec.report import StabilityReport
+from holomj.spec.scene import SceneSpec
 from holomj.version import __version__
 
 HEADER_COLOR = "#2c3e50"  # the table header; the browser test looks for it
@@ -110,7 +111,7 @@ def render_page(
         _verdict(report),
         _viewer(scene, library, report, glb) if glb is not None else "",
         _images(manifest, images),
-        _object_table(scene, library, report),
+        object_table(scene, library, report),
         _validation(report),
         _plan_notes(plan),
         _import_notes(imported),
@@ -200,104 +201,6 @@ def _images(manifest: Mapping[str, Any] | None, images: Mapping[str, bytes | str
     return "\n".join(parts)
 
 
-def _object_table(scene: SceneSpec, library: AssetLibrary, report: StabilityReport | None) -> str:
-    by_name = {o.name: o for o in report.objects} if report is not None else {}
-    heads = [
-        "object",
-        "room",
-        "category",
-        "asset",
-        "size w×d×h (m)",
-        "mass (kg)",
-        "kind",
-        "support",
-        "stable",
-        "moved (mm)",
-        "turned (°)",
-        "notes",
-    ]
-    rows = [
-        _object_row(obj, library, by_name.get(obj.id), report is not None) for obj in scene.objects
-    ]
-    if not rows:
-        return "<h2>Objects</h2><p>The scene has no objects.</p>"
-    head = "".join(f"<th>{escape(h)}</th>" for h in heads)
-    return (
-        f'<h2>Objects</h2><table id="objects"><thead><tr>{head}</tr></thead>'
-        f"<tbody>{''.join(rows)}</tbody></table>"
-    )
-
-
-def _object_facts(
-    obj: SceneObject, library: AssetLibrary, result: ObjectReport | None, validated: bool
-) -> dict[str, Any]:
-    """What the table and the 3D view say about one object (numbers unformatted)."""
-    facts: dict[str, Any] = {
-        "room": obj.room,
-        "asset": obj.asset,
-        "category": None,
-        "size": None,
-        "mass_kg": None,
-        # what the validation simulated, when known; else the scene's flag
-        "static": not result.dynamic if result is not None else bool(obj.static),
-        "support": obj.support,
-    }
-    if obj.asset in library:
-        meta = library.get(obj.asset).meta
-        sx, sy, sz = obj.scale3
-        proxy = meta.proxy or obj.proxy
-        facts["category"] = f"{meta.category} (proxy)" if proxy else meta.category
-        facts["size"] = (meta.size[0] * sx, meta.size[1] * sy, meta.size[2] * sz)
-        facts["mass_kg"] = obj.mass_kg if obj.mass_kg is not None else meta.mass * sx * sy * sz
-    if result is not None:
-        facts["stable"] = result.stable
-        facts["verdict"] = "stable" if result.stable else "not stable"
-        facts["reasons"] = list(result.reasons)
-        facts["moved_mm"] = result.displacement_m * 1000
-        facts["turned_deg"] = result.rotation_from_authored_deg
-    else:
-        facts["verdict"] = "not in report" if validated else "not validated"
-    return facts
-
-
-def _object_row(
-    obj: SceneObject, library: AssetLibrary, result: ObjectReport | None, validated: bool
-) -> str:
-    facts = _object_facts(obj, library, result, validated)
-    category = facts["category"] or "?"
-    size = "?" if facts["size"] is None else " × ".join(f"{v:.2f}" for v in facts["size"])
-    mass = "?" if facts["mass_kg"] is None else f"{facts['mass_kg']:.2f}"
-    if result is not None:
-        stable = "yes" if result.stable else "no"
-        # how far it ended from its authored pose (rule (b) of the stability rule)
-        drift = f"{facts['moved_mm']:.2f}"
-        rotation = f"{facts['turned_deg']:.2f}"
-        notes = "; ".join(result.reasons)
-    else:
-        stable = facts["verdict"]
-        drift = rotation = notes = "—"
-    css = ' class="unstable"' if result is not None and not result.stable else ""
-    cells = [
-        (obj.id, ""),
-        (obj.room or "—", ""),
-        (category, ""),
-        (obj.asset, ""),
-        (size, "num"),
-        (mass, "num"),
-        ("static" if facts["static"] else "free", ""),
-        (obj.support or "floor", ""),
-        (stable, ""),
-        (drift, "num"),
-        (rotation, "num"),
-        (notes, ""),
-    ]
-    tds = "".join(
-        f'<td class="{c}">{escape(str(v))}</td>' if c else f"<td>{escape(str(v))}</td>"
-        for v, c in cells
-    )
-    return f"<tr{css}>{tds}</tr>"
-
-
 def _viewer(
     scene: SceneSpec, library: AssetLibrary, report: StabilityReport | None, glb: bytes
 ) -> str:
@@ -305,7 +208,7 @@ def _viewer(
     by_name = {o.name: o for o in report.objects} if report is not None else {}
     facts = {}
     for obj in scene.objects:
-        entry = _object_facts(obj, library, by_name.get(obj.id), report is not None)
+        entry = object_facts(obj, library, by_name.get(obj.id), report is not None)
         entry.pop("size")
         if entry["mass_kg"] is not None:
             entry["mass_kg"] = round(float(entry["mass_kg"]), 3)

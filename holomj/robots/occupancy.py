@@ -46,7 +46,7 @@ class FloorGrid:
     @property
     def shape(self) -> tuple[int, int]:
         """(rows, columns)."""
-        return self.room_index.shape  # type: ignore[return-value]
+        return self.room_index.shape
 
     @property
     def inside(self) -> np.ndarray:

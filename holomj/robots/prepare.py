@@ -117,12 +117,14 @@ def _embed_files(spec: mujoco.MjSpec, xml: Path, sub: str, files: dict[str, byte
     """Read every file ``spec`` refers to and rename it to its key under ``robot/``."""
     base = Path(spec.modelfiledir) if spec.modelfiledir else xml.parent
     dirs = {"mesh": spec.meshdir, "texture": spec.texturedir, "other": ""}
-    items: list[tuple[object, str]] = [(m, "mesh") for m in spec.meshes]
+    items: list[
+        tuple[mujoco.MjsMesh | mujoco.MjsTexture | mujoco.MjsHField | mujoco.MjsSkin, str]
+    ] = [(m, "mesh") for m in spec.meshes]
     items += [(t, "texture") for t in spec.textures]
     items += [(h, "other") for h in spec.hfields]
     items += [(s, "other") for s in spec.skins]
     for element, kind in items:
-        name = element.file  # type: ignore[attr-defined]
+        name = element.file
         if not name:
             continue
         path = Path(name)
@@ -134,7 +136,7 @@ def _embed_files(spec: mujoco.MjSpec, xml: Path, sub: str, files: dict[str, byte
             raise InputError(
                 f"cannot read a file the robot needs: {err.strerror or err}", where=str(path)
             ) from None
-        element.file = _register(files, sub, name, data)  # type: ignore[attr-defined]
+        element.file = _register(files, sub, name, data)
     if any(t.cubefiles and any(t.cubefiles) for t in spec.textures):
         raise InputError("robot textures made of six cube files are not supported", where=str(xml))
     spec.meshdir = ""

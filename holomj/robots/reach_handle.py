@@ -113,7 +113,7 @@ def reach_handle(
         result = arm.solve(target, -toward, tolerance, rng)
         yaw = math.degrees(2 * math.atan2(quat[3], quat[0]))
         reach = HandleReach(
-            target=tuple(float(v) for v in target),  # type: ignore[arg-type]
+            target=(float(target[0]), float(target[1]), float(target[2])),
             site=model.site(arm.site).name,
             reached=result.residual <= tolerance and result.penetration <= PENETRATION_M,
             residual_m=result.residual,

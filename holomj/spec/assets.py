@@ -12,14 +12,15 @@ Asset frame: metres, Z up, origin at the centre of the footprint at the bottom, 
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Final, Literal
 
 from pydantic import AfterValidator, Field, model_serializer, model_validator
 
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat, Rgba, Vec2, Vec3, Vec4
 
-ASSET_SCHEMA_VERSION = "1.0"
+ASSET_SCHEMA_VERSION: Final = "1.0"
 PLACEMENTS = ("floor", "wall", "object", "ceiling")
+Placement = Literal["floor", "wall", "object", "ceiling"]
 
 
 def _inside_folder(path: str) -> str:
@@ -241,9 +242,7 @@ class AssetMeta(FrozenModel):
     )
     density_kg_m3: PositiveFloat = 500.0
     friction: Annotated[float, Field(gt=0.0, le=5.0)] = 0.8
-    placement: list[Literal["floor", "wall", "object", "ceiling"]] = Field(
-        default_factory=lambda: ["floor"]
-    )
+    placement: list[Placement] = Field(default_factory=lambda: list[Placement](["floor"]))
     front: Literal["+x"] = "+x"
     upright: bool = Field(
         default=False, description="Must stand upright when placed (a mug, a vase, a bottle)."

@@ -23,13 +23,13 @@ same whatever the body frame (centre or foot): a footed pole that topples has tu
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Final, Literal
 
 from pydantic import Field
 
 from holomj.spec.base import FrozenModel, Vec3
 
-REPORT_SCHEMA_VERSION = "2.0"
+REPORT_SCHEMA_VERSION: Final = "2.0"
 
 STABILITY_RULE = (
     "stable = (a) at rest: centre of mass moves < drift_m and body turns < rotation_deg over the "

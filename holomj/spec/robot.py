@@ -3,13 +3,13 @@ folder)."""
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Final, Literal
 
 from pydantic import Field
 
 from holomj.spec.base import FrozenModel, PositiveFloat, Vec2, Vec3
 
-ROBOT_SCHEMA_VERSION = "1.0"
+ROBOT_SCHEMA_VERSION: Final = "1.0"
 ROBOT_XML = "robot.xml"  # the prepared robot MJCF: its key among the scene's asset files
 ROBOT_PREFIX = "robot/"
 

@@ -8,7 +8,7 @@ local origin goes, which is the centre of its footprint at its bottom; its front
 from __future__ import annotations
 
 import math
-from typing import Annotated, Literal
+from typing import Annotated, Final, Literal
 
 from pydantic import Field, field_validator, model_validator
 
@@ -25,7 +25,7 @@ from holomj.spec.base import (
 from holomj.spec.materials import BUILTIN_MATERIALS, Material
 from holomj.spec.walls import Wall, derive_walls, find_wall_for_opening, room_polygon
 
-SCHEMA_VERSION = "1.0"
+SCHEMA_VERSION: Final = "1.0"
 
 DOOR_WIDTHS = {"single": 1.0, "double": 2.0}
 DOOR_KINDS = ("doorway", "doorframe", "open")
@@ -204,6 +204,11 @@ class SceneSpec(FrozenModel):
         """The walls derived from the rooms: shared edges once, exterior edges once."""
         return derive_walls(self.rooms)
 
+    @property
+    def openings(self) -> list[Door | Window]:
+        """The doors, then the windows."""
+        return [*self.doors, *self.windows]
+
     def room(self, room_id: str) -> Room:
         """The room with this id."""
         for room in self.rooms:
@@ -246,7 +251,7 @@ def _check_rooms(rooms: list[Room]) -> None:
         try:
             polygons.append(room_polygon(room.polygon))
         except SpecError as err:
-            raise err.located(f"rooms[{index}].polygon") from None
+            raise err.located(f"rooms[{index}].polygon ({room.id})") from None
     for i in range(len(polygons)):
         for j in range(i + 1, len(polygons)):
             if not polygons[i].intersects(polygons[j]):

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol
 
 from shapely.geometry import Polygon
 from shapely.geometry.polygon import orient
@@ -86,24 +87,66 @@ class Wall:
         return (self.start[0] + dx * t, self.start[1] + dy * t)
 
 
+_VERTEX_TOL = 1e-6  # metres: vertices (or a vertex and an edge) closer than this are degenerate
+
+
 def room_polygon(points: Sequence[Sequence[float]]) -> Polygon:
-    """A validated, counter-clockwise shapely polygon for a room's floor outline."""
+    """A validated, counter-clockwise shapely polygon for a room's floor outline.
+
+    A ring may repeat its first vertex exactly at its end; any other pair of vertices closer than
+    1 µm, or a vertex that close to an edge it does not bound (the outline touches itself), is
+    refused with the vertex's index, as are self-intersecting outlines and areas below 0.25 m².
+    """
     pts = [(float(p[0]), float(p[1])) for p in points]
-    if len(pts) > 3 and math.dist(pts[0], pts[-1]) < 1e-9:
+    if len(pts) > 3 and pts[0] == pts[-1]:
         pts = pts[:-1]
     for i, p in enumerate(pts):
-        if math.dist(p, pts[(i + 1) % len(pts)]) < 1e-6:
-            raise SpecError(f"vertices {i} and {(i + 1) % len(pts)} coincide")
         if max(abs(p[0]), abs(p[1])) > 1e4:
             raise SpecError(f"vertex {i} is more than 10 km from the origin")
     if len(pts) < 3:
         raise SpecError("a polygon needs at least three distinct vertices")
+    _check_vertex_spacing(pts)
     polygon = Polygon(pts)
     if not polygon.is_valid or not polygon.exterior.is_simple:
         raise SpecError("polygon intersects itself", fix="list the vertices in order around it")
     if polygon.area < 0.25:
         raise SpecError(f"polygon area {polygon.area:.3f} m² is below 0.25 m²")
     return orient(polygon, sign=1.0)
+
+
+def _check_vertex_spacing(pts: Sequence[Point]) -> None:
+    """Refuse coincident vertices and vertices touching an edge they do not bound."""
+    n = len(pts)
+    for i, p in enumerate(pts):
+        following = (i + 1) % n
+        if math.dist(p, pts[following]) < _VERTEX_TOL:
+            raise SpecError(f"vertices {i} and {following} coincide")
+    for i in range(n):
+        for j in range(i + 2, n):
+            if math.dist(pts[i], pts[j]) < _VERTEX_TOL:
+                raise SpecError(
+                    f"vertices {i} and {j} coincide",
+                    fix="a room's outline must not touch itself; split it into two rooms",
+                )
+    for i, p in enumerate(pts):
+        for a in range(n):
+            b = (a + 1) % n
+            if i in (a, b):
+                continue
+            if _segment_distance(p, pts[a], pts[b]) < _VERTEX_TOL:
+                raise SpecError(
+                    f"vertex {i} touches edge {a}-{b} (closer than 1 µm)",
+                    fix="a room's outline must not touch itself; split it into two rooms",
+                )
+
+
+def _segment_distance(p: Point, a: Point, b: Point) -> float:
+    """Distance from point ``p`` to the segment ``a``-``b``."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    length2 = dx * dx + dy * dy
+    t = 0.0 if length2 == 0 else ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2
+    t = min(1.0, max(0.0, t))
+    return math.dist(p, (a[0] + t * dx, a[1] + t * dy))
 
 
 @dataclass
@@ -121,14 +164,24 @@ class _Line:
     edges: list[_Edge]
 
 
-def derive_walls(rooms: Sequence[object]) -> list[Wall]:
+class RoomOutline(Protocol):
+    """What walls are derived from: a room's id and its floor polygon."""
+
+    @property
+    def id(self) -> str: ...
+
+    @property
+    def polygon(self) -> Sequence[Sequence[float]]: ...
+
+
+def derive_walls(rooms: Sequence[RoomOutline]) -> list[Wall]:
     """Walls of a set of rooms (objects with ``id`` and ``polygon``), in a deterministic order."""
     lines: list[_Line] = []
     for room in rooms:
-        polygon = room_polygon(room.polygon)  # type: ignore[attr-defined]
+        polygon = room_polygon(room.polygon)
         coords = list(polygon.exterior.coords)[:-1]
         for a, b in zip(coords, coords[1:] + coords[:1]):
-            _add_edge(lines, room.id, a, b)  # type: ignore[attr-defined]
+            _add_edge(lines, room.id, a, b)
     walls: list[tuple[tuple[str, ...], Point, Point, str | None]] = []
     for line in lines:
         walls.extend(_split_line(line))

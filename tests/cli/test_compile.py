@@ -57,6 +57,25 @@ def test_compile_then_info(runner: CliRunner, tmp_path: Path) -> None:
     assert info["model"]["total_mass_kg"] > 100
     text = runner.invoke(app, ["info", str(out)])
     assert text.exit_code == 0 and "LivingRoom" in text.stdout
+    nlight = mujoco.MjModel.from_xml_path(str(out / "scene.xml")).nlight
+    assert info["lights"] == info["model"]["lights"] == nlight == 6
+    assert "lights 6" in text.stdout
+
+
+def test_info_counts_the_lights_the_compiler_adds(runner: CliRunner, tmp_path: Path) -> None:
+    """A scene that lists no lights gets a sun and a ceiling light per room: info counts them."""
+    data = json.loads((FIXTURES / "two_room_scene.json").read_text())
+    data["lights"] = []
+    scene = tmp_path / "unlit.json"
+    scene.write_text(json.dumps(data))
+    out = tmp_path / "out"
+    assert runner.invoke(app, ["compile", str(scene), "-o", str(out), "-q"]).exit_code == 0
+    nlight = mujoco.MjModel.from_xml_path(str(out / "scene.xml")).nlight
+    assert nlight == 1 + len(data["rooms"])
+    info = json.loads(runner.invoke(app, ["info", str(out), "--json"]).stdout)
+    assert info["lights"] == nlight
+    text = runner.invoke(app, ["info", str(out)])
+    assert f"lights {nlight}" in text.stdout
 
 
 def test_bad_input_is_one_line_exit_2_and_writes_nothing(runner: CliRunner, tmp_path: Path) -> None:
@@ -72,6 +91,29 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(runner: CliRunner, tmp_
     assert str(bad) in lines[0] and "rooms[0].polygon[1]" in lines[0]
     assert not out.exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.json"]
+
+
+@pytest.mark.parametrize(
+    ("polygon", "message"),
+    [
+        # the ring's last vertex 1e-12 m from its first: used to crash the floor's triangulation
+        ([[0, 0], [4, 0], [4, 3], [0, 3], [1e-12, 0]], "vertices 4 and 0 coincide"),
+        # the outline touches itself: vertex 4 lies 1e-13 m from the edge 0-1
+        ([[0, 0], [4, 0], [4, 3], [0, 3], [2, 1e-13]], "vertex 4 touches edge 0-1"),
+    ],
+)
+def test_degenerate_room_polygon_is_one_line_exit_2(
+    runner: CliRunner, tmp_path: Path, polygon: list, message: str
+) -> None:
+    data = json.loads((FIXTURES / "two_room_scene.json").read_text())
+    data["rooms"][0]["polygon"] = polygon
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps(data))
+    result = runner.invoke(app, ["compile", str(bad), "-o", str(tmp_path / "out")])
+    assert result.exit_code == 2, result.output
+    assert f"rooms[0].polygon (kitchen): {message}" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "out").exists()
 
 
 @pytest.mark.parametrize(

@@ -11,7 +11,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from holomj.formats.usd import scene_stage, valid_name
+from holomj.formats.usd import scene_stage
+from holomj.formats.usd_prims import valid_name
 from holomj.jobs.folder import read_scene
 from holomj.mjcf import names
 from tests.formats.conftest import Articulated

@@ -9,6 +9,7 @@ import pytest
 from PIL import Image
 
 from holomj.mjcf import textures
+from holomj.mjcf.png import png_bytes
 from holomj.mjcf.textures import (
     PATTERNS,
     SIZE_PX,
@@ -16,7 +17,6 @@ from holomj.mjcf.textures import (
     pattern_image,
     pattern_mean,
     pattern_png,
-    png_bytes,
     procedural_look,
     tinted,
 )

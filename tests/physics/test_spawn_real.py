@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from holomj.library import AssetLibrary
-from holomj.physics.spawn import merge_libraries, populate
+from holomj.physics.spawn import populate
+from holomj.physics.spawn_requests import merge_libraries
 from tests.physics.spawn_helpers import receptacle_scene, settle_check
 
 REAL = {

@@ -60,7 +60,7 @@ def test_self_intersecting_room() -> None:
     bow_tie = [[0, 0], [4, 4], [4, 0], [0, 4]]
     _invalid(
         lambda d: d["rooms"][0].update(polygon=bow_tie),
-        r"rooms\[0\]\.polygon: polygon intersects itself",
+        r"rooms\[0\]\.polygon \(kitchen\): polygon intersects itself",
     )
 
 

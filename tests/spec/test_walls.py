@@ -86,6 +86,9 @@ def test_find_wall_for_opening() -> None:
     [
         ([(0, 0), (1, 1), (1, 0), (0, 1)], "intersects itself"),
         ([(0, 0), (0, 0), (1, 0), (0, 1)], "coincide"),
+        ([(0, 1), (1, 0), (0, 0), (0, 1e-12 + 1)], "vertices 3 and 0 coincide"),
+        ([(0, 0), (4, 0), (4, 4), (2, 1e-13), (0, 4)], "vertex 3 touches edge 0-1"),
+        ([(0, 0), (4, 0), (4, 4), (1e-9, 1e-9), (0, 4)], "vertices 0 and 3 coincide"),
         ([(0, 0), (0.1, 0), (0, 0.1)], "area"),
         ([(0, 0), (1e5, 0), (0, 1)], "10 km"),
     ],
@@ -93,3 +96,7 @@ def test_find_wall_for_opening() -> None:
 def test_bad_room_polygons(points, message) -> None:
     with pytest.raises(SpecError, match=message):
         room_polygon(points)
+
+
+def test_a_ring_may_repeat_its_first_vertex_exactly() -> None:
+    assert room_polygon([(0, 0), (2, 0), (2, 2), (0, 2), (0, 0)]).area == pytest.approx(4.0)

@@ -408,6 +408,7 @@ ALLOWED_HOLOMJ = (
     "holomj.spec",
     "holomj.errors",
     "holomj.version",
+    "holomj.file_names",
     "holomj.data",
 )
 

@@ -76,7 +76,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.compose": (
         "plan + assets -> SceneSpec: house shell, room furnishing, small objects, relation report",
-        _holomj("seeds spec library layout data"),
+        _holomj("seeds spec library layout retrieval data"),
     ),
     "holomj.importers": (
         "ProcTHOR/Holodeck house JSON and SceneDef -> SceneSpec",

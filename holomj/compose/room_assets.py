@@ -7,43 +7,16 @@ never dropped silently. Each room draws from its own stage generator.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Any
 
 import numpy as np
 
 from holomj.errors import HolomjError
 from holomj.library.store import AssetLibrary
+from holomj.retrieval.chooser import AssetChooser
 from holomj.seeds import stage_rng
 from holomj.spec.plan import PlanObject, PlanRoom
-
-
-class Pick(Protocol):
-    """One retrieved asset (what :class:`holomj.retrieval.assets.ScoredAsset` offers)."""
-
-    @property
-    def asset_id(self) -> str:
-        """The asset chosen."""
-        ...
-
-
-class AssetChooser(Protocol):
-    """Chooses one asset per instance of a planned object."""
-
-    def choose(
-        self,
-        description: str,
-        *,
-        quantity: int,
-        variance: str,
-        rng: np.random.Generator,
-        size: tuple[float, float, float] | None = None,
-        placement: str = "floor",
-        category: str | None = None,
-    ) -> Sequence[Pick]:
-        """One pick per instance."""
-        ...
 
 
 def description_of(obj: PlanObject) -> str:

@@ -22,9 +22,10 @@ from typing import Any
 
 import numpy as np
 
-from holomj.compose.room_assets import AssetChooser, Pick, on_demand_record
+from holomj.compose.room_assets import on_demand_record
 from holomj.errors import HolomjError, SpecError
 from holomj.library.store import AssetLibrary
+from holomj.retrieval.chooser import AssetChooser, Pick
 from holomj.seeds import stage_rng
 from holomj.spec.plan import PlanObject
 from holomj.spec.scene import SceneSpec

@@ -19,7 +19,7 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon
 
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.objects import SceneObject
 from holomj.evaluation.reachability import ReachGrid
 from holomj.evaluation.vocabulary import Vocabulary
@@ -78,7 +78,7 @@ class FrontZone:
 
 
 def front_access(
-    scene: Scene, vocab: Vocabulary, grid: ReachGrid | None, resting: dict[str, str | None]
+    scene: MeasuredFolder, vocab: Vocabulary, grid: ReachGrid | None, resting: dict[str, str | None]
 ) -> list[dict[str, Any]]:
     """One row per front-used piece of furniture standing on the floor."""
     rows: list[dict[str, Any]] = []
@@ -115,7 +115,7 @@ def front_access(
 
 
 def _seat_reached(
-    scene: Scene,
+    scene: MeasuredFolder,
     vocab: Vocabulary,
     grid: ReachGrid,
     zone: FrontZone,

@@ -36,7 +36,7 @@ from typing import Any
 
 from holomj.evaluation import quantified as quantified_
 from holomj.evaluation.attributes import object_colours, object_has_shape, object_materials
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.objects import SceneObject, SceneRoom
 from holomj.evaluation.openings import door_clearance
 from holomj.evaluation.reachability import reachability
@@ -53,9 +53,9 @@ class Scorer:
         folder: Path,
         spec: dict[str, Any],
         vocab: Vocabulary | None = None,
-        scene: Scene | None = None,
+        scene: MeasuredFolder | None = None,
     ):
-        self.scene = scene if scene is not None else Scene(folder)
+        self.scene = scene if scene is not None else MeasuredFolder(folder)
         self.spec = spec
         self.vocab = vocab or Vocabulary.load()
         label_objects(self.scene, self.vocab)
@@ -63,7 +63,7 @@ class Scorer:
     # -- selection
 
     def rooms_of_type(self, room_name: str | None) -> list[SceneRoom] | None:
-        """Scene rooms of an annotation's room type (None: no restriction)."""
+        """The scene's rooms of an annotation's room type (None: no restriction)."""
         if not room_name:
             return None
         canon = self.vocab.room_canonical(room_name) or normalise(room_name)
@@ -82,7 +82,7 @@ class Scorer:
     def instances(
         self, name: str, room_name: str | None = None, entry: dict[str, Any] | None = None
     ) -> list[SceneObject]:
-        """Scene objects that count as ``name`` (in rooms of ``room_name`` when given; in the
+        """The scene's objects that count as ``name`` (in rooms of ``room_name`` when given; in the
         room and with the ids or categories that ``entry`` names, when it names them)."""
         entry = entry or {}
         room_id = entry.get("room_id")
@@ -377,7 +377,7 @@ def tally(rows: list[dict[str, Any]]) -> list[int]:
 _LABELLED = "_holomj_eval_labelled"
 
 
-def label_objects(scene: Scene, vocab: Vocabulary) -> None:
+def label_objects(scene: MeasuredFolder, vocab: Vocabulary) -> None:
     """Give proxies the categories the vocabulary makes of their id's noun, and turn the view
     of work furniture used from its front (once per scene)."""
     if getattr(scene, _LABELLED, False):

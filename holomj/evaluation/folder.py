@@ -37,7 +37,7 @@ def read_json(path: Path) -> Any:
         return None
 
 
-class Scene:
+class MeasuredFolder:
     """What the evaluator reads from a scene folder."""
 
     def __init__(self, folder: Path) -> None:

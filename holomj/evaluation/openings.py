@@ -18,7 +18,7 @@ from typing import Any
 
 import shapely
 
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.vocabulary import Vocabulary
 
 DOOR_ZONE_DEPTH_M = 1.0
@@ -29,7 +29,9 @@ WINDOW_OVERLAP_M2 = 0.0025
 WINDOW_COVER_SHARE = 0.25
 
 
-def door_clearance(scene: Scene, open_passage_m: float | None = None) -> list[dict[str, Any]]:
+def door_clearance(
+    scene: MeasuredFolder, open_passage_m: float | None = None
+) -> list[dict[str, Any]]:
     """For each door, the furniture overlapping the 1 m deep zone on either side."""
     out = []
     floor = [o for o in scene.objects if o.is_floor_standing]
@@ -61,7 +63,7 @@ def _widest_gap(spans: list[tuple[float, float]], width: float) -> float:
     return max(best, width / 2 - edge)
 
 
-def window_clearance(scene: Scene, vocab: Vocabulary) -> list[dict[str, Any]]:
+def window_clearance(scene: MeasuredFolder, vocab: Vocabulary) -> list[dict[str, Any]]:
     """For each window, the objects standing or hanging in front of it."""
     out = []
     candidates = [

@@ -10,12 +10,12 @@ from typing import Any
 from shapely.geometry import Point
 from shapely.ops import unary_union
 
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 
 OUTSIDE_M = 0.05
 
 
-def outside_rooms(scene: Scene) -> tuple[list[dict[str, Any]], int]:
+def outside_rooms(scene: MeasuredFolder) -> tuple[list[dict[str, Any]], int]:
     """(the objects outside their room, with how far and where their centre is; the number
     of objects checked)."""
     if not scene.rooms:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from holomj.evaluation import relations as rel_
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.objects import SceneObject
 from holomj.evaluation.relations import Verdict
 
@@ -22,7 +22,7 @@ OPENING_WORDS = ("window", "windows", "door", "doors", "entrance", "door entranc
 PerInstance = tuple[SceneObject, bool, str]
 
 
-def by_place(scene: Scene, kind: str, subjects: list[SceneObject]) -> list[PerInstance]:
+def by_place(scene: MeasuredFolder, kind: str, subjects: list[SceneObject]) -> list[PerInstance]:
     """``kind`` of each subject to the room's walls (a corner, the middle, against, near or next
     to a wall)."""
     per: list[PerInstance] = []
@@ -43,7 +43,7 @@ def by_place(scene: Scene, kind: str, subjects: list[SceneObject]) -> list[PerIn
 
 
 def by_opening(
-    scene: Scene, kind: str, subjects: list[SceneObject], opening: str
+    scene: MeasuredFolder, kind: str, subjects: list[SceneObject], opening: str
 ) -> list[PerInstance]:
     """``kind`` of each subject to one of its room's windows (``opening`` a window word) or
     doors."""
@@ -58,7 +58,11 @@ def by_opening(
 
 
 def by_object(
-    scene: Scene, kind: str, subjects: list[SceneObject], objects: list[SceneObject], target: str
+    scene: MeasuredFolder,
+    kind: str,
+    subjects: list[SceneObject],
+    objects: list[SceneObject],
+    target: str,
 ) -> list[PerInstance]:
     """``kind`` of each subject to any instance of the target in its room."""
     per: list[PerInstance] = []

@@ -24,7 +24,7 @@ import shapely
 from scipy import ndimage
 from shapely.ops import unary_union
 
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 
 ROBOT_RADIUS_M = 0.2
 GRID_M = 0.05
@@ -57,7 +57,7 @@ def grid_from_navmap(nav: dict[str, Any]) -> tuple[np.ndarray, np.ndarray, tuple
     return free, np.where(inside, rooms, -1), tuple(nav["origin"]), float(nav["cell_m"])
 
 
-def grid_from_polygons(scene: Scene) -> tuple[np.ndarray, np.ndarray, tuple, float]:
+def grid_from_polygons(scene: MeasuredFolder) -> tuple[np.ndarray, np.ndarray, tuple, float]:
     """(free mask, room-label grid, origin, cell) rasterised from rooms, walls and furniture."""
     union = unary_union([r.poly for r in scene.rooms])
     x0, y0, x1, y1 = union.bounds
@@ -90,7 +90,7 @@ def grid_from_polygons(scene: Scene) -> tuple[np.ndarray, np.ndarray, tuple, flo
     return free, rooms, origin, GRID_M
 
 
-def entrance(scene: Scene) -> tuple[tuple[float, float], tuple[float, float]] | None:
+def entrance(scene: MeasuredFolder) -> tuple[tuple[float, float], tuple[float, float]] | None:
     """The entrance point and the normal into the house."""
     nav = scene.navmap or {}
     ent = nav.get("entrance") or {}
@@ -132,7 +132,7 @@ class ReachGrid:
         return np.meshgrid(xs, ys)
 
 
-def robot_reach(scene: Scene, radius: float = ROBOT_RADIUS_M) -> ReachGrid | None:
+def robot_reach(scene: MeasuredFolder, radius: float = ROBOT_RADIUS_M) -> ReachGrid | None:
     """The reach of a robot of ``radius`` in ``scene`` (None when the scene has no rooms)."""
     method = "navmap"
     try:
@@ -182,7 +182,9 @@ def robot_reach(scene: Scene, radius: float = ROBOT_RADIUS_M) -> ReachGrid | Non
     )
 
 
-def object_interiors(scene: Scene, labels: np.ndarray, origin: tuple, cell: float) -> np.ndarray:
+def object_interiors(
+    scene: MeasuredFolder, labels: np.ndarray, origin: tuple, cell: float
+) -> np.ndarray:
     """Cells of the labelled pockets that lie wholly inside one floor object's footprint."""
     interior = np.zeros(labels.shape, dtype=bool)
     if not labels.any():
@@ -212,7 +214,7 @@ def object_interiors(scene: Scene, labels: np.ndarray, origin: tuple, cell: floa
     return interior
 
 
-def reachability(scene: Scene, radius: float = ROBOT_RADIUS_M) -> dict[str, Any]:
+def reachability(scene: MeasuredFolder, radius: float = ROBOT_RADIUS_M) -> dict[str, Any]:
     """Reachable share of the robot's free space (and swept coverage), overall and per room."""
     grid = robot_reach(scene, radius)
     if grid is None:

@@ -27,7 +27,7 @@ from typing import Any
 
 from shapely.geometry import LineString, Point
 
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.geometry import angle_deg, direction
 from holomj.evaluation.objects import Opening, SceneObject
 
@@ -127,13 +127,13 @@ def facing(s: SceneObject, o: SceneObject) -> bool:
     return faces_point(s, o.center, FACING_DEG) or ray_hits(s, o.fp)
 
 
-def wall_side(scene: Scene, obj: SceneObject) -> tuple[float, LineString] | None:
+def wall_side(scene: MeasuredFolder, obj: SceneObject) -> tuple[float, LineString] | None:
     """The distance to, and the edge of, the wall nearest ``obj`` in its room."""
     room = scene.room_of(obj)
     return scene.nearest_wall(room, obj.fp) if room is not None else None
 
 
-def across(scene: Scene, s: SceneObject, o: SceneObject) -> bool:
+def across(scene: MeasuredFolder, s: SceneObject, o: SceneObject) -> bool:
     """Both face each other (45 degrees), or they stand at opposite parallel walls."""
     if faces_point(s, o.center, ACROSS_DEG) and faces_point(o, s.center, ACROSS_DEG):
         return True
@@ -144,7 +144,7 @@ def across(scene: Scene, s: SceneObject, o: SceneObject) -> bool:
     return min(parallel, 180 - parallel) <= 10.0 and ws[1].distance(wo[1]) > 1.0
 
 
-def against_wall(scene: Scene, s: SceneObject) -> tuple[bool, str]:
+def against_wall(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
     """The back edge within 15 cm of a wall surface, parallel within 20 degrees."""
     room = scene.room_of(s)
     if room is None:
@@ -172,7 +172,7 @@ def against_wall(scene: Scene, s: SceneObject) -> tuple[bool, str]:
     return best[0] <= WALL_M, best[1]
 
 
-def in_corner(scene: Scene, s: SceneObject) -> tuple[bool, str]:
+def in_corner(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
     """The footprint within 20 cm of both walls of a convex corner of its room."""
     room = scene.room_of(s)
     if room is None:
@@ -192,7 +192,7 @@ def in_corner(scene: Scene, s: SceneObject) -> tuple[bool, str]:
     return best <= CORNER_M, f"{best:.2f} m from the farther wall of its nearest corner"
 
 
-def middle(scene: Scene, s: SceneObject) -> tuple[bool, str]:
+def middle(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
     """More than 1 m from every wall, or centred in a small room."""
     room = scene.room_of(s)
     if room is None:
@@ -263,7 +263,7 @@ def opening_relation(rel: str, s: SceneObject, op: Opening) -> bool:
     return False
 
 
-def pair_relation(scene: Scene, kind: str, s: SceneObject, o: SceneObject) -> bool:
+def pair_relation(scene: MeasuredFolder, kind: str, s: SceneObject, o: SceneObject) -> bool:
     """Whether ``s`` is ``kind`` to the object ``o``."""
     if kind == "near":
         return near(s, o)

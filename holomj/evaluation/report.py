@@ -33,7 +33,7 @@ from typing import Any
 from holomj.evaluation.access import front_access
 from holomj.evaluation.collisions import collision_summary
 from holomj.evaluation.fidelity import Scorer
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.openings import OPEN_PASSAGE_M, door_clearance, window_clearance
 from holomj.evaluation.outside import outside_rooms
 from holomj.evaluation.reachability import ReachGrid, reach_summary, robot_reach
@@ -148,7 +148,7 @@ def _rows(rows: list[dict[str, Any]], what: str) -> dict[str, Any]:
 
 
 def evaluate_scene(
-    scene: Scene,
+    scene: MeasuredFolder,
     spec: dict[str, Any] | None,
     *,
     vocab: Vocabulary | None = None,
@@ -247,7 +247,7 @@ def _fidelity(
 
 
 def _access(
-    scene: Scene,
+    scene: MeasuredFolder,
     vocab: Vocabulary,
     grid: ReachGrid | None,
     resting: dict[str, str | None],

@@ -23,7 +23,7 @@ from typing import Any
 
 from shapely.geometry import Point, Polygon
 
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.objects import SceneObject
 from holomj.evaluation.vocabulary import Vocabulary
 
@@ -71,14 +71,16 @@ def _tops(obj: SceneObject) -> list[tuple[float, Polygon]]:
     return tops
 
 
-def _near_wall(scene: Scene, obj: SceneObject) -> bool:
+def _near_wall(scene: MeasuredFolder, obj: SceneObject) -> bool:
     room = scene.room_of(obj)
     if room is None:
         return False
     return scene.nearest_wall(room, obj.fp)[0] <= WALL_GAP_M
 
 
-def rests_on(scene: Scene, obj: SceneObject, vocab: Vocabulary) -> tuple[str | None, str, float]:
+def rests_on(
+    scene: MeasuredFolder, obj: SceneObject, vocab: Vocabulary
+) -> tuple[str | None, str, float]:
     """(what ``obj`` rests on, how that was found, the area it rests on in m²)."""
     if obj.labels & vocab.wall_mounted and _near_wall(scene, obj):
         return "wall", "wall-mounted kind beside a wall", 0.0
@@ -135,7 +137,7 @@ def judge(obj: SceneObject, on: str | None, area: float, vocab: Vocabulary) -> t
     return True, f"on {on}"
 
 
-def supports(scene: Scene, vocab: Vocabulary) -> list[Support]:
+def supports(scene: MeasuredFolder, vocab: Vocabulary) -> list[Support]:
     """What every object of ``scene`` rests on, and whether that is plausible."""
     out = []
     for obj in scene.objects:

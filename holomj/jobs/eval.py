@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from holomj.errors import InputError
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.plan_spec import spec_from_plan
 from holomj.evaluation.report import EvalReport, evaluate_scene
 from holomj.evaluation.specs import check_spec, read_spec
@@ -83,7 +83,7 @@ def evaluate(
 
     clock = time.perf_counter()
     result = evaluate_scene(
-        Scene(folder),
+        MeasuredFolder(folder),
         target,
         vocab=vocab,
         against=against,

@@ -13,7 +13,7 @@ from holomj.atomic import write_file
 from holomj.compose.house import ComposedHouse, compose_house
 from holomj.compose.house_shell import MaterialPicker
 from holomj.compose.relation_report import structural_verdicts
-from holomj.compose.room_assets import AssetChooser, RoomAssets, retrieve_room
+from holomj.compose.room_assets import RoomAssets, retrieve_room
 from holomj.compose.small_objects import choose_small_objects
 from holomj.errors import HolomjError
 from holomj.file_names import GENERATE_JSON, GENERATE_LOG, PLAN_JSON, REPORT_JSON
@@ -25,6 +25,7 @@ from holomj.jobs.stage_log import StageLog
 from holomj.library.store import AssetLibrary
 from holomj.mjcf.compiler import CompiledScene, compile_scene
 from holomj.physics.small_object_drops import SmallObjects, drop_small_objects
+from holomj.retrieval.chooser import AssetChooser
 from holomj.seeds import stage_rng
 from holomj.spec.plan import ScenePlan
 from holomj.spec.report import StabilityReport, Thresholds

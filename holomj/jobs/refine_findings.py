@@ -59,10 +59,10 @@ def fences(folder: str) -> list[Finding]:
     from scipy import ndimage
     from shapely import contains_xy
 
-    from holomj.evaluation.folder import Scene
+    from holomj.evaluation.folder import MeasuredFolder
     from holomj.evaluation.reachability import robot_reach
 
-    scene = Scene(Path(folder))
+    scene = MeasuredFolder(Path(folder))
     grid = robot_reach(scene)
     if grid is None or not grid.entrance_found:
         return []

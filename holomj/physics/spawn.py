@@ -445,7 +445,13 @@ def _judge_candidate(
 ) -> str | None:
     surface = surfaces[k]
     return landing_problem(
-        world, outcome, surface.polygon, surface.height, bodies[surface.part], upright, before
+        world,
+        outcome,
+        surface.polygon,
+        surface.height,
+        frozenset({bodies[surface.part]}),
+        upright,
+        before,
     )
 
 
@@ -454,14 +460,15 @@ def landing_problem(
     outcome: Outcome,
     polygon: Polygon,
     surface_z: float | None,
-    rec_body: int,
+    rec_bodies: frozenset[int],
     upright: bool,
     before: dict[str, np.ndarray],
     receptacle: str = "the receptacle",
 ) -> str | None:
     """Why a dropped object's outcome is rejected (the rule of spawn-and-drop), or None when it
     is accepted: it must stay finite, not end more than ``FALL_TOL_M`` below ``surface_z``
-    (None: no such check), be at rest, stand over ``polygon``, touch ``rec_body`` and no
+    (None: no such check), be at rest, stand over ``polygon``, touch one of ``rec_bodies`` (the
+    receptacle's bodies) and no
     object placed before, be upright when ``upright``, and leave those objects (``before``:
     their positions) where they were. ``receptacle`` names the receptacle in the reasons."""
     if not outcome.finite:
@@ -472,7 +479,7 @@ def landing_problem(
         return "still moving"
     if not polygon.contains(Point(float(outcome.position[0]), float(outcome.position[1]))):
         return "off the surface"
-    if rec_body not in outcome.touches:
+    if not rec_bodies & outcome.touches:
         return f"not resting on {receptacle}"
     if outcome.touches & {world.bodies[object_id].body for object_id in before}:
         return "leans on another object"

@@ -13,7 +13,10 @@ import numpy as np
 class Pick(Protocol):
     """One retrieved asset (what :class:`holomj.retrieval.scores.ScoredAsset` offers)."""
 
-    asset_id: str
+    @property
+    def asset_id(self) -> str:
+        """The asset chosen."""
+        ...
 
 
 class AssetChooser(Protocol):

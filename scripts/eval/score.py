@@ -41,7 +41,7 @@ from holomj.evaluation.attributes import (
     rgba_colour,
 )
 from holomj.evaluation.fidelity import Scorer, score_folder
-from holomj.evaluation.folder import Scene
+from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.objects import Opening, SceneObject, SceneRoom
 from holomj.evaluation.reachability import reachability
 from holomj.evaluation.relations import RELATIONS, Verdict
@@ -54,8 +54,8 @@ VOCABULARY_FILE = default_vocabulary_file()
 __all__ = [
     "RELATIONS",
     "VOCABULARY_FILE",
+    "MeasuredFolder",
     "Opening",
-    "Scene",
     "SceneObject",
     "SceneRoom",
     "Scorer",

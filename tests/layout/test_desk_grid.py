@@ -465,7 +465,7 @@ def test_classroom_prompt_gives_rows_reachable_floor_and_the_board_in_front(
     report = json.loads((out / "report.json").read_text())
     assert report["ok"], report["counts"]
     score = _score_module()
-    reach = score.reachability(score.Scene(out))
+    reach = score.reachability(score.MeasuredFolder(out))
     assert reach["entrance_found"] and reach["share"] >= 0.97, reach
     objects = json.loads((out / "scene.json").read_text())["objects"]
     assert sum(o["id"].startswith("classroom.student_desk_") for o in objects) == 8

@@ -43,12 +43,8 @@ from holomj.physics.audit import GeomOwners, lowest_points
 from holomj.physics.bounds import world_aabbs
 from holomj.physics.drop_world import FULL, DropWorld, Outcome
 from holomj.physics.spawn import (
-    DISTURB_TOL_M,
-    FALL_TOL_M,
     LIFT_CAP_M,
-    REST_SPEED,
-    REST_SPIN,
-    UPRIGHT_TOL_DEG,
+    landing_problem,
 )
 from holomj.physics.standing.prepass import Surface, receptacle_surfaces
 from holomj.physics.surfaces_world import footprint, footprint_polygon, object_yaw
@@ -462,25 +458,17 @@ def _judge(
     _candidate: int,
     outcome: Outcome,
 ) -> str | None:
-    """Why a drop is rejected, or None when it is accepted (the rule of spawn-and-drop; on the
-    top of a bounding box it may land lower, on the receptacle all the same)."""
-    if not outcome.finite:
-        return "simulation diverged"
-    if not surface.box_top and outcome.position[2] < surface.world.height - FALL_TOL_M:
-        return "fell off"
-    if outcome.speed > REST_SPEED or outcome.spin > REST_SPIN:
-        return "still moving"
-    xy = Point(float(outcome.position[0]), float(outcome.position[1]))
-    if not surface.world.polygon.contains(xy):
-        return "off the surface"
-    if not rec_bodies & outcome.touches:
-        return "not resting on its receptacle"
-    if outcome.touches & {world.bodies[object_id].body for object_id in before}:
-        return "leans on another object"
-    if upright and outcome.tilt_deg > UPRIGHT_TOL_DEG:
-        return "not upright"
-    for object_id, pos in before.items():
-        moved, _ = world.pose(object_id, outcome.state)
-        if np.linalg.norm(moved - pos) > DISTURB_TOL_M:
-            return "disturbed a placed object"
-    return None
+    """Why a drop is rejected, or None when it is accepted (the rule of spawn-and-drop,
+    :func:`~holomj.physics.spawn.landing_problem`; on the top of a bounding box it may land lower,
+    on the receptacle all the same)."""
+    surface_z = None if surface.box_top else surface.world.height
+    return landing_problem(
+        world,
+        outcome,
+        surface.world.polygon,
+        surface_z,
+        rec_bodies,
+        upright,
+        before,
+        receptacle="its receptacle",
+    )

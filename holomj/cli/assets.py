@@ -4,8 +4,9 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from rich.markup import escape
@@ -14,6 +15,9 @@ from rich.table import Table
 
 from holomj.cli.options import JsonOption, LibraryOption, StrictOption
 from holomj.cli.output import emit_json, err_console, guard, library_root, out_console
+
+if TYPE_CHECKING:
+    from holomj.jobs.assets import ImportRun
 
 assets_app = typer.Typer(help="Manage asset libraries.", no_args_is_help=True)
 
@@ -98,10 +102,19 @@ def import_command(
     Exits with 0 when every file was imported (degraded ones included, unless --strict), 1 when
     any failed (the others are kept).
     """
-    from holomj.jobs.assets import import_assets
+    from holomj.jobs.assets import ImportRun, import_assets
 
     _run_import(
-        lambda on_planned, on_done: import_assets(
+        ImportRun(
+            preset=preset,
+            threshold=threshold,
+            max_hulls=max_hulls,
+            timeout_s=timeout,
+            workers=workers,
+            thumbnails=thumbnails,
+            accept_fallback=accept_fallback,
+        ),
+        lambda run: import_assets(
             paths,
             library=library,
             asset_id=asset_id,
@@ -111,18 +124,9 @@ def import_command(
             mass_kg=mass,
             up=up,
             front=front,
-            preset=preset,
-            threshold=threshold,
-            max_hulls=max_hulls,
-            timeout_s=timeout,
-            workers=workers,
-            thumbnails=thumbnails,
-            accept_fallback=accept_fallback,
-            on_planned=on_planned,
-            on_done=on_done,
+            run=run,
         ),
         as_json=as_json,
-        accept_fallback=accept_fallback,
         strict=strict,
     )
 
@@ -167,40 +171,37 @@ def import_objathor_command(
     Exits with 0 when every uid was imported (degraded ones included, unless --strict), 1 when
     any failed (the others are kept), 2 for a bad folder or option.
     """
+    from holomj.jobs.assets import ImportRun
     from holomj.jobs.objathor import import_objathor, parse_uids
 
     _run_import(
-        lambda on_planned, on_done: import_objathor(
-            directory,
-            library=library,
-            uids=parse_uids(uids),
-            colliders=colliders,
+        ImportRun(
             preset=preset,
             timeout_s=timeout,
             workers=workers,
             thumbnails=thumbnails,
             accept_fallback=accept_fallback,
-            on_planned=on_planned,
-            on_done=on_done,
+        ),
+        lambda run: import_objathor(
+            directory, library=library, uids=parse_uids(uids), colliders=colliders, run=run
         ),
         as_json=as_json,
-        accept_fallback=accept_fallback,
         strict=strict,
         full_errors=True,
     )
 
 
 def _run_import(
-    start: Callable[[Callable[[int], None], Callable[[Any], None]], Any],
+    run: ImportRun,
+    start: Callable[[ImportRun], Any],
     *,
     as_json: bool,
-    accept_fallback: bool,
     strict: bool,
     full_errors: bool = False,
 ) -> None:
-    """Run an import job, ``start(on_planned, on_done)``, under a progress bar; then print its
-    summary (and, with ``full_errors``, each failure's whole error) or emit it as JSON, and
-    exit with 1 when any failed (or, with ``strict``, was degraded)."""
+    """Run an import job, ``start(run)`` with ``run``'s progress hooks driving a progress bar;
+    then print its summary (and, with ``full_errors``, each failure's whole error) or emit it
+    as JSON, and exit with 1 when any failed (or, with ``strict``, was degraded)."""
     columns = (
         TextColumn("[progress.description]{task.description}"),
         BarColumn(),
@@ -209,17 +210,17 @@ def _run_import(
     )
     with Progress(*columns, console=err_console, disable=as_json, transient=True) as progress:
         task = progress.add_task("importing", total=None)
-        result = guard(
-            lambda: start(
-                lambda total: progress.update(task, total=total),
-                lambda outcome: progress.update(task, advance=1, description=outcome.asset_id),
-            )
+        hooked = replace(
+            run,
+            on_planned=lambda total: progress.update(task, total=total),
+            on_done=lambda outcome: progress.update(task, advance=1, description=outcome.asset_id),
         )
+        result = guard(lambda: start(hooked))
     summary = result.summary
     if as_json:
         emit_json(result.to_dict())
     else:
-        _print_summary(result.library, summary, accept_fallback)
+        _print_summary(result.library, summary, run.accept_fallback)
         if full_errors:
             for o in summary.failed:  # the whole error, unwrapped, whatever the table cut
                 err_console.print(f"error: {o.asset_id}: {o.error}", markup=False, soft_wrap=True)

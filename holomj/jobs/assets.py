@@ -45,6 +45,44 @@ class AssetImport:
 
 
 @dataclass(frozen=True)
+class ImportRun:
+    """How an import job runs, whatever it imports: the CoACD settings (``preset`` with the
+    ``threshold`` / ``max_hulls`` / ``timeout_s`` overrides, None keeping the preset's), the
+    parallel ``workers``, ``thumbnails``, whether fallback decompositions are cached as final
+    (``accept_fallback``), and the progress hooks: ``on_planned`` gets the number of files once
+    they are listed, ``on_done`` each file's outcome as it finishes."""
+
+    preset: str = "default"
+    threshold: float | None = None
+    max_hulls: int | None = None
+    timeout_s: float | None = None
+    workers: int = 1
+    thumbnails: bool = True
+    accept_fallback: bool = False
+    on_planned: Callable[[int], None] | None = None
+    on_done: Callable[[Any], None] | None = None
+
+    def coacd(self) -> Any:
+        """The pipeline's CoacdParams of these settings; an InputError for an unknown preset."""
+        from asset_pipeline.manage import coacd_params
+
+        return coacd_params(
+            self.preset,
+            threshold=self.threshold,
+            max_convex_hull=self.max_hulls,
+            timeout_s=self.timeout_s,
+        )
+
+    def planned(self, count: int) -> None:
+        """Tell ``on_planned`` (when given) that ``count`` files will be imported."""
+        if self.on_planned is not None:
+            self.on_planned(count)
+
+
+DEFAULT_IMPORT_RUN = ImportRun()
+
+
+@dataclass(frozen=True)
 class AssetListing:
     """The assets of a library: its name and root, one row per asset."""
 
@@ -81,45 +119,34 @@ def import_assets(
     mass_kg: float | None = None,
     up: str | None = None,
     front: str = "+x",
-    preset: str = "default",
-    threshold: float | None = None,
-    max_hulls: int | None = None,
-    timeout_s: float | None = None,
-    workers: int = 1,
-    thumbnails: bool = True,
-    accept_fallback: bool = False,
-    on_planned: Callable[[int], None] | None = None,
-    on_done: Callable[[Any], None] | None = None,
+    run: ImportRun = DEFAULT_IMPORT_RUN,
 ) -> AssetImport:
     """Import the mesh files (or folders of them) ``paths`` into ``library`` (default: the
     default library; a new folder becomes an empty library first).
 
-    The options are checked and the files listed before anything is written; ``on_planned``
-    then gets the number of files, ``on_done`` each file's outcome as it finishes. Ids never
-    silently take over another asset's (see :func:`asset_pipeline.import_plan.plan_jobs`: a clash
-    gets a ``-2`` suffix and a note, a clashing ``asset_id`` fails). A file that
-    fails is reported in the summary and the others go on; see
-    :func:`asset_pipeline.manage.run_imports` for degraded (fallback) decompositions.
+    ``run``: how it runs (CoACD settings, workers, thumbnails, progress hooks). The options are
+    checked and the files listed before anything is written. Ids never silently take over
+    another asset's (see :func:`asset_pipeline.import_plan.plan_jobs`: a clash gets a ``-2``
+    suffix and a note, a clashing ``asset_id`` fails). A file that fails is reported in the
+    summary and the others go on; see :func:`asset_pipeline.manage.run_imports` for degraded
+    (fallback) decompositions.
     """
     from asset_pipeline.import_plan import existing_assets, plan_jobs
     from asset_pipeline.manage import run_imports
 
-    options = _import_options(
-        category, size, description, mass_kg, up, front, preset, threshold, max_hulls, timeout_s
-    )
+    options = _import_options(category, size, description, mass_kg, up, front, run)
     plan_jobs(paths, asset_id)  # the files are checked before anything is written
     root = resolve_library(library, create=True)
     jobs = plan_jobs(paths, asset_id, existing_assets(root))
-    if on_planned is not None:
-        on_planned(len(jobs))
+    run.planned(len(jobs))
     summary = run_imports(
         jobs,
         root,
         options,
-        workers=workers,
-        thumbnails=thumbnails,
-        on_done=on_done,
-        accept_fallback=accept_fallback,
+        workers=run.workers,
+        thumbnails=run.thumbnails,
+        on_done=run.on_done,
+        accept_fallback=run.accept_fallback,
     )
     return AssetImport(root, summary)
 
@@ -131,22 +158,15 @@ def _import_options(
     mass_kg: float | None,
     up: str | None,
     front: str,
-    preset: str,
-    threshold: float | None,
-    max_hulls: int | None,
-    timeout_s: float | None,
+    run: ImportRun,
 ) -> Any:
     """The pipeline's ImportOptions; an InputError for a bad axis, front or CoACD preset."""
     from asset_pipeline.importer import ImportOptions
-    from asset_pipeline.manage import coacd_params
 
     if up is not None and up not in UP_AXES:
         raise InputError(f"unknown up axis {up!r}", where="--up", fix="use y or z")
     if front not in FRONTS:
         raise InputError(f"unknown front {front!r}", where="--front", fix="use +x, -x, +y or -y")
-    coacd = coacd_params(
-        preset, threshold=threshold, max_convex_hull=max_hulls, timeout_s=timeout_s
-    )
     return ImportOptions(
         category=category,
         size=size,
@@ -154,7 +174,7 @@ def _import_options(
         mass_kg=mass_kg,
         up_axis=cast(UpAxis | None, up),  # checked against UP_AXES above
         front=cast(Front, front),  # checked against FRONTS above
-        coacd=coacd,
+        coacd=run.coacd(),  # after the axes, as the options are checked in order
     )
 
 

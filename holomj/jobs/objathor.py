@@ -8,13 +8,13 @@ The asset pipeline is imported inside the function: holomj's core never depends 
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
-from typing import Any, Literal
+from typing import Literal
 
 from holomj.errors import InputError
-from holomj.jobs.assets import AssetImport
+from holomj.jobs.assets import DEFAULT_IMPORT_RUN, AssetImport, ImportRun
 from holomj.jobs.library import resolve_library
 from holomj.library.store import AssetLibrary
 from holomj.spec.choices import one_of
@@ -38,26 +38,17 @@ def import_objathor(
     library: Path | None = None,
     uids: Sequence[str] | None = None,
     colliders: str = "shipped",
-    preset: str = "default",
-    threshold: float | None = None,
-    max_hulls: int | None = None,
-    timeout_s: float | None = None,
-    workers: int = 1,
-    thumbnails: bool = True,
-    accept_fallback: bool = False,
-    on_planned: Callable[[int], None] | None = None,
-    on_done: Callable[[Any], None] | None = None,
+    run: ImportRun = DEFAULT_IMPORT_RUN,
 ) -> AssetImport:
     """Import the assets of the objathor ``directory`` (only ``uids`` when given) into
     ``library`` (default: the default library; a new folder becomes an empty library first).
 
     ``colliders``: ``shipped`` (the asset's own convex pieces; CoACD where it has none) or
-    ``coacd`` (the pipeline's decomposition with ``preset`` / ``threshold`` / ``max_hulls`` /
-    ``timeout_s``). The options and the directory are checked before anything is written; a
-    uid that fails is reported in the summary and the others go on. Re-importing unchanged
-    assets takes them from the library's cache.
+    ``coacd`` (the pipeline's decomposition with ``run``'s CoACD settings); ``run``: how it
+    runs (workers, thumbnails, progress hooks). The options and the directory are checked
+    before anything is written; a uid that fails is reported in the summary and the others go
+    on. Re-importing unchanged assets takes them from the library's cache.
     """
-    from asset_pipeline.manage import coacd_params
     from asset_pipeline.objathor import plan_objathor
     from asset_pipeline.objathor_import import ObjathorOptions, run_objathor_imports
 
@@ -68,24 +59,20 @@ def import_objathor(
             where="--colliders",
             fix=f"use one of: {', '.join(COLLIDER_MODES)}",
         )
-    coacd = coacd_params(
-        preset, threshold=threshold, max_convex_hull=max_hulls, timeout_s=timeout_s
-    )
-    options = ObjathorOptions(colliders=mode, coacd=coacd)
+    options = ObjathorOptions(colliders=mode, coacd=run.coacd())
     jobs = plan_objathor(directory, uids)  # checked before anything is written
     root = resolve_library(library, create=True)
     held = set(AssetLibrary.open(root).ids())
     note = "replaces the library's asset {!r}"
     jobs = [replace(j, id_note=note.format(j.uid)) if j.uid in held else j for j in jobs]
-    if on_planned is not None:
-        on_planned(len(jobs))
+    run.planned(len(jobs))
     summary = run_objathor_imports(
         jobs,
         Path(root),
         options,
-        workers=workers,
-        thumbnails=thumbnails,
-        accept_fallback=accept_fallback,
-        on_done=on_done,
+        workers=run.workers,
+        thumbnails=run.thumbnails,
+        accept_fallback=run.accept_fallback,
+        on_done=run.on_done,
     )
     return AssetImport(Path(root), summary)

@@ -28,6 +28,7 @@ from asset_pipeline.objathor import (
 )
 from asset_pipeline.objathor_import import ObjathorOptions
 from holomj.errors import FormatError, InputError
+from holomj.jobs.assets import ImportRun
 from holomj.jobs.objathor import import_objathor, parse_uids
 from holomj.library import AssetLibrary
 from holomj.spec.assets import PLACEMENTS
@@ -53,7 +54,7 @@ def imported(tmp_path_factory: pytest.TempPathFactory, shared: Path):
     """Three assets (desk, box, clock) imported with their shipped colliders."""
     root = tmp_path_factory.mktemp("objathor")
     meshes = build_objathor_dir(root / "dir", shared)
-    result = import_objathor(root / "dir", library=root / "lib", thumbnails=False)
+    result = import_objathor(root / "dir", library=root / "lib", run=ImportRun(thumbnails=False))
     return root, meshes, result
 
 
@@ -137,7 +138,9 @@ def test_conversion_matrix() -> None:
 def test_y_rot_offset_is_applied(tmp_path: Path, shared: Path) -> None:
     """THOR turns the stored mesh by yRotOffset: the asset must come out as THOR shows it."""
     meshes = build_objathor_dir(tmp_path / "dir", shared, (DESK_UID,), y_rot_offset_deg=30.0)
-    result = import_objathor(tmp_path / "dir", library=tmp_path / "lib", thumbnails=False)
+    result = import_objathor(
+        tmp_path / "dir", library=tmp_path / "lib", run=ImportRun(thumbnails=False)
+    )
     assert not result.summary.failed
     asset = AssetLibrary.open(tmp_path / "lib").get(DESK_UID)
     assert asset.meta.size == pytest.approx((0.5, 1.0, 0.75), abs=1e-5)
@@ -148,7 +151,9 @@ def test_reimport_is_cached_and_identical(imported) -> None:
     root, _, _ = imported
     library = AssetLibrary.open(root / "lib")
     before = (library.get(DESK_UID).root / "asset.json").read_bytes()
-    again = import_objathor(root / "dir", library=root / "lib", uids=[DESK_UID], thumbnails=False)
+    again = import_objathor(
+        root / "dir", library=root / "lib", uids=[DESK_UID], run=ImportRun(thumbnails=False)
+    )
     (outcome,) = again.summary.outcomes
     assert outcome.ok and outcome.cached
     assert "replaces" in (outcome.id_note or "")
@@ -159,7 +164,7 @@ def test_reimport_is_cached_and_identical(imported) -> None:
 def test_parallel_workers(tmp_path: Path, shared: Path) -> None:
     build_objathor_dir(tmp_path / "dir", shared, (BOX_UID, CLOCK_UID))
     result = import_objathor(
-        tmp_path / "dir", library=tmp_path / "lib", workers=2, thumbnails=False
+        tmp_path / "dir", library=tmp_path / "lib", run=ImportRun(workers=2, thumbnails=False)
     )
     assert [o.ok for o in result.summary.outcomes] == [True, True]
     assert {BOX_UID, CLOCK_UID} <= set(AssetLibrary.open(tmp_path / "lib").ids())
@@ -171,8 +176,7 @@ def test_coacd_colliders(tmp_path: Path, shared: Path) -> None:
         tmp_path / "dir",
         library=tmp_path / "lib",
         colliders="coacd",
-        preset="fast",
-        thumbnails=False,
+        run=ImportRun(preset="fast", thumbnails=False),
     )
     (outcome,) = result.summary.outcomes
     assert outcome.ok, outcome.error
@@ -190,7 +194,9 @@ def _one_asset(tmp_path: Path, shared: Path, uid: str = BOX_UID) -> Path:
 def test_missing_texture_is_a_warning(tmp_path: Path, shared: Path) -> None:
     folder = _one_asset(tmp_path, shared)
     (folder / "albedo.jpg").unlink()
-    result = import_objathor(tmp_path / "dir", library=tmp_path / "lib", thumbnails=False)
+    result = import_objathor(
+        tmp_path / "dir", library=tmp_path / "lib", run=ImportRun(thumbnails=False)
+    )
     assert result.summary.outcomes[0].ok
     asset = AssetLibrary.open(tmp_path / "lib").get(BOX_UID)
     assert asset.meta.visual[0].texture is None
@@ -203,7 +209,7 @@ def test_missing_colliders_fall_back_to_coacd(tmp_path: Path, shared: Path) -> N
     mesh = asset_mesh(shared, SPECS[BOX_UID][0], SPECS[BOX_UID][1])
     write_pickle(folder / f"{BOX_UID}.pkl.gz", mesh_dict(mesh, BOX_UID, colliders=False))
     result = import_objathor(
-        tmp_path / "dir", library=tmp_path / "lib", preset="fast", thumbnails=False
+        tmp_path / "dir", library=tmp_path / "lib", run=ImportRun(preset="fast", thumbnails=False)
     )
     assert result.summary.outcomes[0].ok
     derivation = _derivation(AssetLibrary.open(tmp_path / "lib"), BOX_UID)
@@ -218,7 +224,9 @@ def test_corrupt_pickle_fails_naming_the_file(tmp_path: Path, shared: Path) -> N
     with pytest.raises(FormatError, match="corrupt pickle") as err:
         read_mesh(path)
     assert str(path) in str(err.value)
-    result = import_objathor(tmp_path / "dir", library=tmp_path / "lib", thumbnails=False)
+    result = import_objathor(
+        tmp_path / "dir", library=tmp_path / "lib", run=ImportRun(thumbnails=False)
+    )
     (outcome,) = result.summary.outcomes
     assert not outcome.ok and str(path) in (outcome.error or "")
     path.write_bytes(b"\x1f\x8b\x08\x00garbage")  # broken gzip stream
@@ -281,7 +289,7 @@ def test_other_mesh_formats(tmp_path: Path, shared: Path) -> None:
                             "pose_z_rot_angle": 0.0}}  # fmt: skip
     (tmp_path / "glb" / "annotations.json").write_text(json.dumps(annotation))
     result = import_objathor(
-        tmp_path / "glb", library=tmp_path / "lib", preset="fast", thumbnails=False
+        tmp_path / "glb", library=tmp_path / "lib", run=ImportRun(preset="fast", thumbnails=False)
     )
     assert result.summary.outcomes[0].ok, result.summary.outcomes[0].error
     size = AssetLibrary.open(tmp_path / "lib").get(BOX_UID).meta.size

@@ -101,9 +101,9 @@ def _compile_and_validate(
     )
     report = validate(folder)
     write_report(folder, REPORT_JSON, report.model_dump(mode="json"))
-    stand = compiled.stand or {}
+    stand = compiled.stand
     return report, {
-        "moved": len(stand.get("moved", [])),
-        "left_out": len(stand.get("left_out", [])),
+        "moved": 0 if stand is None else len(stand.moved),
+        "left_out": 0 if stand is None else len(stand.left_out),
         "substituted": len(compiled.substitutions),
     }

@@ -10,7 +10,7 @@ OUT is untouched), 1 for a failure of ours, and when objects could not be made t
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.markup import escape
@@ -30,6 +30,7 @@ from holomj.importers.detect import FORMATS
 
 if TYPE_CHECKING:
     from holomj.jobs.compile import CompileReport
+    from holomj.spec.stand_record import StandRecord
 
 InputArgument = Annotated[
     Path,
@@ -166,37 +167,37 @@ def _print_report(report: CompileReport) -> None:
         out_console.print(f"  [red]MuJoCo warnings in the smoke run:[/] {report.sim_warnings}")
 
 
-def _print_stand(stand: dict[str, Any]) -> None:
+def _print_stand(stand: StandRecord) -> None:
     """What making the scene stand changed, and the verdict."""
-    before, after = stand["penetrations_before"], stand["penetrations_after"]
+    before, after = stand.penetrations_before, stand.penetrations_after
     out_console.print(
-        f"  made it stand: {len(stand['moved'])} moved, {len(stand['dropped'])} dropped onto "
-        f"receptacles, {len(stand['separated'])} separated; penetrations "
+        f"  made it stand: {len(stand.moved)} moved, {len(stand.dropped)} dropped onto "
+        f"receptacles, {len(stand.separated)} separated; penetrations "
         f"{before['count']} (max {before['max_m'] * 1000:.0f} mm) -> {after['count']} "
         f"(max {after['max_m'] * 1000:.1f} mm)"
     )
     _print_kept(stand)
-    validation = stand.get("validation") or {}
-    if stand["valid"]:
+    validation = stand.validation or {}
+    if stand.valid:
         out_console.print(
             f"  [green]valid:[/] {validation['stable']}/{validation['objects']} objects stable"
         )
         return
     out_console.print(
-        f"  [bold red]INVALID[/] (written with --allow-invalid): {escape(str(stand['refusal']))}"
+        f"  [bold red]INVALID[/] (written with --allow-invalid): {escape(str(stand.refusal))}"
     )
-    for row in stand["unsaved"][:8]:
+    for row in stand.unsaved[:8]:
         out_console.print(f"    {row['object']}: {row['why']}", markup=False)
 
 
-def _print_kept(stand: dict[str, Any]) -> None:
+def _print_kept(stand: StandRecord) -> None:
     """The objects moved to another receptacle or left out, and the share kept."""
-    relocated, left = stand.get("relocated", []), stand.get("left_out", [])
+    relocated, left = stand.relocated, stand.left_out
     if not relocated and not left:
         return
     out_console.print(
-        f"  kept {stand['objects_kept']}/{stand['objects_imported']} objects "
-        f"({stand['kept_share']:.1%}): {len(relocated)} moved to another receptacle, "
+        f"  kept {stand.objects_kept}/{stand.objects_imported} objects "
+        f"({stand.kept_share:.1%}): {len(relocated)} moved to another receptacle, "
         f"{len(left)} left out (see import_report.json)"
     )
     for row in (relocated + left)[:8]:

@@ -16,6 +16,7 @@ import typer
 
 from holomj.cli.options import FolderArg, JsonOption, QuietOption
 from holomj.cli.output import emit_json, err_console, guard, out_console, spinner
+from holomj.spec.export_details import UrdfDetails, UsdDetails
 
 
 def export_command(
@@ -67,16 +68,16 @@ def export_command(
         f"[bold green]exported[/] {result.format}: {result.target} "
         f"({_size(result.bytes)} in {len(result.files)} files, {seconds:.1f} s)"
     )
-    if result.format == "usd":
-        d = result.details
+    details = result.details
+    if isinstance(details, UsdDetails):
         out_console.print(
-            f"  {d['rigid_bodies']} rigid bodies, {d['colliders']} colliders, "
-            f"{d['joints']} joints, {d['textures']} textures"
+            f"  {details.rigid_bodies} rigid bodies, {details.colliders} colliders, "
+            f"{details.joints} joints, {details.textures} textures"
         )
-        for note in d.get("notes", []):
+        for note in details.notes:
             out_console.print(f"  note: {note}", markup=False)
-    if result.format == "urdf":
-        assets = result.details["assets"]
+    if isinstance(details, UrdfDetails):
+        assets = details.assets
         if not assets:
             out_console.print(
                 "  no articulated assets (no hinge or slide joints): nothing to write"

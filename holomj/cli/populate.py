@@ -126,7 +126,7 @@ def populate_command(
         )
     )
     if as_json:
-        emit_json(outcome.report)
+        emit_json(outcome.report.to_dict())
     else:
         _print_outcome(outcome, on)
     if not outcome.all_placed:
@@ -141,31 +141,29 @@ def _print_outcome(outcome: PopulateResult, on: str) -> None:
         f"[bold {colour}]placed {outcome.placed}/{outcome.requested}[/] on {on} "
         f"-> {outcome.folder} (see {POPULATE_REPORT})"
     )
-    for note in report.get("notes", []):
+    for note in report.notes or []:
         out_console.print(f"  note: {note}", markup=False)
-    if report.get("drawn_from") and report["drawn_from"] != "llm pointing":
-        names = ", ".join(f"{r['name']}:{r['count']}" for r in report["requests"])
-        out_console.print(
-            f"  drawn from the {report['drawn_from']} statistics: {names}", markup=False
-        )
-    for placement in report["placements"]:
+    if report.drawn_from and report.drawn_from != "llm pointing":
+        names = ", ".join(f"{r.name}:{r.count}" for r in report.requests)
+        out_console.print(f"  drawn from the {report.drawn_from} statistics: {names}", markup=False)
+    for placement in report.placements:
         if not placement["accepted"]:
             out_console.print(
                 f"  [yellow]not placed:[/] {placement['object_id']} ({placement['asset']}): "
                 f"{placement['reason']} after {placement['attempts']} attempts",
                 markup=True,
             )
-    validation = report.get("validation")
+    validation = report.validation
     if validation is not None:
-        counts = validation["counts"]
-        verdict = "[green]ok[/]" if validation["ok"] else "[red]NOT ok[/]"
+        counts = validation.counts
+        verdict = "[green]ok[/]" if validation.ok else "[red]NOT ok[/]"
         out_console.print(
             f"  report.json rewritten: validation {verdict}, {counts['stable']}/"
-            f"{counts['objects']} stable (furniture {validation['furniture']})"
+            f"{counts['objects']} stable (furniture {validation.furniture})"
         )
-    if report["stale_files"]:
+    if report.stale_files:
         out_console.print(
-            f"  {' and '.join(report['stale_files'])} show the scene before this "
+            f"  {' and '.join(report.stale_files)} show the scene before this "
             f"run: 'holomj render {outcome.folder}' refreshes them",
             markup=False,
         )

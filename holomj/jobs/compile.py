@@ -43,6 +43,7 @@ from holomj.physics.standing.keep import KeptHouse, make_stand_keeping
 from holomj.spec.report import StabilityReport
 from holomj.spec.robot import RobotRecord
 from holomj.spec.scene import SceneSpec
+from holomj.spec.stand_record import StandRecord
 
 FIXED_FORMATS = ("procthor", "holodeck", "scenedef")  # made to stand unless fix=False
 MAX_NAMED = 8  # unsaved objects named in the error message
@@ -77,13 +78,13 @@ class CompileReport:
     sim_warnings: dict[str, int]
     timings_s: dict[str, float] = field(default_factory=dict)
     robot: RobotSpot | None = None
-    stand: dict[str, Any] | None = None  # what making it stand changed (None: not run)
+    stand: StandRecord | None = None  # what making it stand changed (None: not run)
     merged: list[dict[str, str]] = field(default_factory=list)  # fixtures of a stand-in
 
     @property
     def valid(self) -> bool | None:
         """Whether the written scene stands (None when it was not made to stand)."""
-        return None if self.stand is None else bool(self.stand["valid"])
+        return None if self.stand is None else self.stand.valid
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-able form."""
@@ -93,6 +94,7 @@ class CompileReport:
             "scene": self.scene.to_dict(),
             "model": self.model.to_dict(),
             "robot": robot,
+            "stand": None if self.stand is None else self.stand.to_dict(),
         }
 
 
@@ -220,14 +222,14 @@ def _report_files(
     result: ImportResult,
     sim_warnings: dict[str, int],
     stand: KeptHouse | None,
-    stand_record: dict[str, Any] | None,
+    stand_record: StandRecord | None,
 ) -> dict[str, Any]:
     """``import_report.json`` and, when the house was made to stand, ``report.json``."""
     files: dict[str, Any] = {
         IMPORT_REPORT: {
             **result.to_report(),
             "simulation_warnings": sim_warnings,
-            **(stand_record or {}),
+            **(stand_record.to_dict() if stand_record is not None else {}),
         }
     }
     if stand is not None and stand.outcome.report is not None:
@@ -237,16 +239,18 @@ def _report_files(
 
 def _stand_record(
     stand: KeptHouse, refusal: str | None, allow_invalid: bool, strict: bool
-) -> dict[str, Any]:
+) -> StandRecord:
     """What making the house stand changed, for ``import_report.json`` and the report."""
-    return {
-        **stand.outcome.to_report(),
-        **stand.to_report(),
-        "valid": stand.outcome.valid and refusal is None,
-        "refusal": refusal,
-        "allow_invalid": allow_invalid,
-        "strict": strict,
-    }
+    return StandRecord(
+        **{
+            **stand.outcome.to_report(),
+            **stand.to_report(),
+            "valid": stand.outcome.valid and refusal is None,
+            "refusal": refusal,
+            "allow_invalid": allow_invalid,
+            "strict": strict,
+        }
+    )
 
 
 def _make_stand(

@@ -24,7 +24,7 @@ import re
 import shutil
 import tempfile
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -33,6 +33,7 @@ from holomj.errors import ExportError, InputError
 from holomj.file_names import OBJECTS_JSON, SCENE_XML
 from holomj.jobs.folder import read_json_report, read_scene
 from holomj.jobs.folder import require_scene_folder as _require_scene_folder
+from holomj.spec.export_details import ExportDetails, GlbDetails, UrdfDetails, UsdDetails
 
 FORMATS = ("glb", "usd", "urdf")
 EXPORT_DIR = "export"
@@ -52,10 +53,12 @@ class ExportResult:
     files: list[str]
     bytes: int
     timings_s: dict[str, float] = field(default_factory=dict)
-    details: dict[str, Any] = field(default_factory=dict)
+    details: ExportDetails | None = None  # None until the format's writer ran
 
     def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
+        """JSON-able form (``details``: the format's, ``{}`` before it ran)."""
+        details = {} if self.details is None else self.details.model_dump()
+        return {**asdict(replace(self, details=None)), "details": details}
 
 
 def default_target(out: Path, fmt: str) -> Path:
@@ -160,7 +163,7 @@ def _export_glb(
     timings["write"] = time.perf_counter() - clock
     result.files = [target.name]
     result.bytes = len(data)
-    result.details = {"colliders": colliders}
+    result.details = GlbDetails(colliders=colliders)
 
 
 def _object_info(folder: Path) -> dict[str, dict[str, Any]]:
@@ -220,14 +223,14 @@ def _export_usd(
     from pxr import UsdPhysics
 
     prims = list(stage.Traverse())
-    result.details = {
-        "prims": len(prims),
-        "rigid_bodies": sum(p.HasAPI(UsdPhysics.RigidBodyAPI) for p in prims),
-        "colliders": sum(p.HasAPI(UsdPhysics.CollisionAPI) for p in prims),
-        "joints": sum(p.IsA(UsdPhysics.Joint) for p in prims),
-        "textures": len(usd.textures),
-        "notes": list(usd.notes),
-    }
+    result.details = UsdDetails(
+        prims=len(prims),
+        rigid_bodies=sum(p.HasAPI(UsdPhysics.RigidBodyAPI) for p in prims),
+        colliders=sum(p.HasAPI(UsdPhysics.CollisionAPI) for p in prims),
+        joints=sum(p.IsA(UsdPhysics.Joint) for p in prims),
+        textures=len(usd.textures),
+        notes=list(usd.notes),
+    )
 
 
 def _export_urdf(
@@ -267,7 +270,7 @@ def _export_urdf(
     timings["write"] = time.perf_counter() - clock
     result.files = sorted(files)
     result.bytes = sum(len(d) for d in files.values())
-    result.details = {"assets": assets}
+    result.details = UrdfDetails(assets=assets)
 
 
 def _folder_name(asset_id: str, taken: set[str]) -> str:

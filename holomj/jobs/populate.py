@@ -47,6 +47,12 @@ from holomj.physics.settle import validate_loaded
 from holomj.physics.spawn import populate
 from holomj.physics.spawn_requests import find_object, merge_libraries
 from holomj.seeds import MAX_SEED, seed_rng, stage_rng
+from holomj.spec.populate_report import (
+    PopulateReport,
+    PopulateRun,
+    PopulateValidation,
+    RequestedCount,
+)
 from holomj.spec.report import StabilityReport, Thresholds
 from holomj.spec.scene import SceneSpec
 
@@ -92,7 +98,7 @@ class PopulateResult:
     receptacle: str
     requested: int
     placed: int
-    report: dict[str, Any]
+    report: PopulateReport
 
     @property
     def all_placed(self) -> bool:
@@ -156,17 +162,19 @@ def populate_folder(
             scene, library, receptacle_id, requests, instruction, count, seed, max_attempts,
             with_robot,
         )  # fmt: skip
+    added: dict[str, Any] = {}
     if instruction is not None:
-        run["instruction"] = instruction
-        run["planner"] = "llm" if chat is not None else "offline"
+        added["instruction"] = instruction
+        added["planner"] = "llm" if chat is not None else "offline"
     if notes:
-        run["notes"] = notes
+        added["notes"] = notes
+    run = run.model_copy(update=added)
     report = _write_populated(folder, prepared, result_scene, library, run, with_robot)
     return PopulateResult(
         folder=str(folder),
         receptacle=receptacle_id,
-        requested=run["requested"],
-        placed=run["placed"],
+        requested=run.requested,
+        placed=run.placed,
         report=report,
     )
 
@@ -183,7 +191,7 @@ def _run_pointing(
     max_attempts: int,
     with_robot: Callable[[CompiledScene], CompiledScene],
     log: Callable[[str], None] | None,
-) -> tuple[SceneSpec, dict[str, Any]]:
+) -> tuple[SceneSpec, PopulateRun]:
     """The model names each object and points at where it goes; the populated scene and the
     run's report. Assets made on demand are added to ``libraries[0]`` (the folder's)."""
     _check_count(count)
@@ -217,7 +225,7 @@ def _run_drops(
     seed: int,
     max_attempts: int,
     with_robot: Callable[[CompiledScene], CompiledScene],
-) -> tuple[SceneSpec, dict[str, Any]]:
+) -> tuple[SceneSpec, PopulateRun]:
     """Spawn-and-drop the requests (drawn when None); the populated scene and the run's
     report."""
     drawn_from = None
@@ -234,14 +242,14 @@ def _run_drops(
         max_attempts=max_attempts,
         attach=with_robot,
     )
-    run = {
-        "receptacle": receptacle_id,
-        "requests": [{"name": n, "count": c} for n, c in requests],
-        "drawn_from": drawn_from,
-        "seed": seed,
-        "max_attempts": max_attempts,
+    run = PopulateRun(
+        receptacle=receptacle_id,
+        requests=[RequestedCount(name=n, count=c) for n, c in requests],
+        drawn_from=drawn_from,
+        seed=seed,
+        max_attempts=max_attempts,
         **result.to_dict(),
-    }
+    )
     return result.scene, run
 
 
@@ -296,7 +304,7 @@ def _drawn_requests(
 
 def _pointing_run(
     pointed: PointingOutcome, chat: VisionChat, receptacle_id: str, seed: int, max_attempts: int
-) -> dict[str, Any]:
+) -> PopulateRun:
     """The report of a run in which the model pointed at where each object goes."""
     placements = [
         {
@@ -309,23 +317,25 @@ def _pointing_run(
         for r in pointed.records
         if r.get("status") != "done"
     ]
-    return {
-        "receptacle": receptacle_id,
-        "requests": [{"name": r["name"], "count": 1} for r in pointed.records if r.get("name")],
-        "drawn_from": "llm pointing",
-        "seed": seed,
-        "max_attempts": max_attempts,
-        "requested": len(placements),
-        "placed": pointed.placed,
-        "placements": placements,
-        "pointing": pointed.records,
-        "llm": {
+    return PopulateRun(
+        receptacle=receptacle_id,
+        requests=[
+            RequestedCount(name=r["name"], count=1) for r in pointed.records if r.get("name")
+        ],
+        drawn_from="llm pointing",
+        seed=seed,
+        max_attempts=max_attempts,
+        requested=len(placements),
+        placed=pointed.placed,
+        placements=placements,
+        pointing=pointed.records,
+        llm={
             "model": chat.config.model,
             "images": chat.images,
             "text_only_reason": chat.text_only_reason,
             **pointed.usage,
         },
-    }
+    )
 
 
 def _write_populated(
@@ -333,9 +343,9 @@ def _write_populated(
     prepared: PreparedOutput,
     scene: SceneSpec,
     library: AssetLibrary,
-    run: dict[str, Any],
+    run: PopulateRun,
     with_robot: Callable[[CompiledScene], CompiledScene],
-) -> dict[str, Any]:
+) -> PopulateReport:
     """Compile the populated scene and write it back into ``folder`` (``prepared`` for writing)
     with its validation (when the folder had one) and the populate report; returns the
     report."""
@@ -344,16 +354,16 @@ def _write_populated(
     if (folder / REPORT_JSON).exists():
         validation = _validate(scene, library, folder)
         written[REPORT_JSON] = validation.model_dump(mode="json")
-        run["validation"] = {
-            "ok": validation.ok,
-            "furniture": validation.furniture,
-            "counts": validation.counts,
-        }
+        checked = PopulateValidation(
+            ok=validation.ok, furniture=validation.furniture, counts=validation.counts
+        )
+        run = run.model_copy(update={"validation": checked})
     previous = _previous_runs(folder)
     # Kept as they are, but made from the scene before this run.
     stale = [name for name in (RENDERS_DIR, REPORT_HTML) if (folder / name).exists()]
-    report = {**run, "runs": [*previous, run], "stale_files": stale}
-    written[POPULATE_REPORT] = report
+    this_run = run.to_dict()
+    report = PopulateReport(**this_run, runs=[*previous, this_run], stale_files=stale)
+    written[POPULATE_REPORT] = report.to_dict()
     write_scene_folder(compiled, prepared, extra_json=written, keep_from=folder)
     return report
 

@@ -13,6 +13,7 @@ import pytest
 
 from holomj.formats.urdf import UrdfFile, articulated_urdfs
 from holomj.jobs.folder import read_scene
+from holomj.spec.export_details import UrdfDetails
 from tests.formats.conftest import Articulated
 
 
@@ -145,9 +146,10 @@ def check_quickstart_urdf(apartment: Path, tmp_path: Path) -> None:
     result = export_folder(apartment, "urdf", tmp_path / "urdf")
     model = mujoco.MjModel.from_xml_path(str(apartment / "scene.xml"))
     moving = [j for j in range(model.njnt) if model.jnt_type[j] != mujoco.mjtJoint.mjJNT_FREE]
-    exported = [j for asset in result.details["assets"] for j in asset["joints"]]
+    assert isinstance(result.details, UrdfDetails)
+    exported = [j for asset in result.details.assets for j in asset["joints"]]
     assert len(exported) == len(moving) > 0
-    for asset in result.details["assets"]:
+    for asset in result.details.assets:
         path = tmp_path / "urdf" / asset["urdf"]
         loaded = mujoco.MjModel.from_xml_path(str(path))
         assert loaded.njnt == len(asset["joints"])

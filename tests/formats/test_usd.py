@@ -15,6 +15,7 @@ from holomj.formats.usd import scene_stage
 from holomj.formats.usd_prims import valid_name
 from holomj.jobs.folder import read_scene
 from holomj.mjcf import names
+from holomj.spec.export_details import UsdDetails
 from tests.formats.conftest import Articulated
 
 pxr = pytest.importorskip("pxr", reason="usd-core is not installed (the export extra)")
@@ -213,7 +214,8 @@ def test_usdz_from_the_job_reads_back_with_its_textures(two_room_out: Path, tmp_
     stage = Usd.Stage.Open(str(target))
     model = mujoco.MjModel.from_xml_path(str(two_room_out / "scene.xml"))
     check_stage_matches_model(stage, model)
-    assert result.details["rigid_bodies"] == len(_rigid_bodies(stage))
+    assert isinstance(result.details, UsdDetails)
+    assert result.details.rigid_bodies == len(_rigid_bodies(stage))
     assert _validation_errors(stage) == []
 
 
@@ -252,5 +254,6 @@ def check_quickstart_usd(apartment: Path, tmp_path: Path) -> None:
         if p.GetAttribute("inputs:file").IsValid()
     ]
     assert files and all(f.resolvedPath for f in files)  # textures inside the package
-    assert result.details["textures"] == len({f.path for f in files})
+    assert isinstance(result.details, UsdDetails)
+    assert result.details.textures == len({f.path for f in files})
     assert _validation_errors(stage) == []

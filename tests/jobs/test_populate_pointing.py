@@ -210,8 +210,9 @@ def test_llm_names_points_and_the_objects_land_there(
     assert "code" in server.requests[5].messages[-1]["content"]
     assert result.placed == 2 and result.requested == 2
     report = result.report
-    assert report["planner"] == "llm" and report["drawn_from"] == "llm pointing"
-    placed = [r for r in report["pointing"] if r["status"] == "placed"]
+    assert report.planner == "llm" and report.drawn_from == "llm pointing"
+    assert report.pointing is not None and report.llm is not None
+    placed = [r for r in report.pointing if r["status"] == "placed"]
     assert [r["name"] for r in placed] == ["a book", "an apple"]
     scene = read_scene(folder)
     for record, (x, y) in zip(placed, spots):
@@ -219,10 +220,10 @@ def test_llm_names_points_and_the_objects_land_there(
         obj = next(o for o in scene.objects if o.id == record["object_id"])
         assert obj.support == TABLE
         assert np.hypot(obj.position[0] - x, obj.position[1] - y) <= 0.12
-    assert report["pointing"][-1]["status"] == "done"
-    assert report["llm"]["calls"] == 8 and report["llm"]["images_sent"] == 8
-    assert report["llm"]["prompt_tokens"] == 800
-    assert report["validation"]["ok"]
+    assert report.pointing[-1]["status"] == "done"
+    assert report.llm["calls"] == 8 and report.llm["images_sent"] == 8
+    assert report.llm["prompt_tokens"] == 800
+    assert report.validation is not None and report.validation.ok
 
 
 @pytest.mark.slow
@@ -241,8 +242,8 @@ def test_offline_the_instruction_or_the_priors_decide(
         instruction="a book and an apple",
         library_path=default_library.root,
     )
-    assert result.report["drawn_from"] == "instruction"
-    assert {r["name"] for r in result.report["requests"]} == {"book", "apple"}
+    assert result.report.drawn_from == "instruction"
+    assert {r.name for r in result.report.requests} == {"book", "apple"}
     for name in ("HOLOMJ_LLM_BASE_URL", "OPENAI_BASE_URL", "HOLOMJ_LLM_MODEL"):
         monkeypatch.delenv(name, raising=False)
     again = populate_folder(
@@ -254,8 +255,8 @@ def test_offline_the_instruction_or_the_priors_decide(
         library_path=default_library.root,
         count=2,
     )
-    assert again.report["planner"] == "offline"
-    assert "no LLM" in again.report["notes"][0]
-    assert again.report["drawn_from"] != "instruction"  # nothing named: the priors
+    assert again.report.planner == "offline"
+    assert again.report.notes is not None and "no LLM" in again.report.notes[0]
+    assert again.report.drawn_from != "instruction"  # nothing named: the priors
     with pytest.raises(holomj.InputError, match="not both"):
         populate_folder(folder, TABLE, "mug", instruction="a mug")

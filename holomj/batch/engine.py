@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Protocol
 
@@ -15,21 +16,26 @@ OnDone = Callable[[JobResult], None]
 DEFAULT_TIMEOUT_S = 600.0
 
 
+@dataclass(frozen=True)
+class EngineRun:
+    """What every job of one engine run shares: the folder the jobs write into, their
+    options, and the hooks told when a job starts and when it is done (exactly once per job)."""
+
+    out_dir: Path
+    options: JobOptions
+    on_start: OnStart
+    on_done: OnDone
+
+
 class Engine(Protocol):
     """Runs every job once; a job's failure (error, crash, timeout) is a failed result."""
 
     name: str
     workers: int
 
-    def run(
-        self,
-        jobs: Sequence[Job],
-        out_dir: Path,
-        options: JobOptions,
-        on_start: OnStart,
-        on_done: OnDone,
-    ) -> None:
-        """Run ``jobs`` writing into ``out_dir``; call ``on_done`` exactly once per job."""
+    def run(self, jobs: Sequence[Job], run: EngineRun) -> None:
+        """Run ``jobs`` writing into ``run.out_dir``; call ``run.on_done`` exactly once per
+        job."""
         ...
 
 

@@ -28,7 +28,7 @@ from multiprocessing.connection import Connection, wait
 from multiprocessing.process import BaseProcess
 from pathlib import Path
 
-from holomj.batch.engine import DEFAULT_TIMEOUT_S, OnDone, OnStart, timeout_message
+from holomj.batch.engine import DEFAULT_TIMEOUT_S, EngineRun, timeout_message
 from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult, failed_result
 from holomj.batch.resume import clean_partial
@@ -80,15 +80,9 @@ class LocalEngine:
         self.workers_started = 0
         self._context = multiprocessing.get_context("spawn")
 
-    def run(
-        self,
-        jobs: Sequence[Job],
-        out_dir: Path,
-        options: JobOptions,
-        on_start: OnStart,
-        on_done: OnDone,
-    ) -> None:
+    def run(self, jobs: Sequence[Job], run: EngineRun) -> None:
         """Run ``jobs``, at most ``workers`` at a time; see the module docstring."""
+        out_dir = run.out_dir
         pending = deque(jobs)
         slots = [_Slot(i) for i in range(min(self.workers, len(pending)))]
         try:
@@ -96,13 +90,13 @@ class LocalEngine:
                 for slot in slots:
                     if slot.job is None and pending:
                         job = pending.popleft()
-                        self._assign(slot, job, out_dir, options)
-                        on_start(job)
+                        self._assign(slot, job, out_dir, run.options)
+                        run.on_start(job)
                 self._wait(slots)
                 for slot in slots:
                     result = self._collect(slot, out_dir)
                     if result is not None:
-                        on_done(result)
+                        run.on_done(result)
         finally:
             for slot in slots:
                 self._stop(slot, graceful=slot.job is None)

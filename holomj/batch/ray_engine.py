@@ -19,11 +19,11 @@ from __future__ import annotations
 import contextlib
 import time
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from holomj.batch.engine import DEFAULT_TIMEOUT_S, OnDone, OnStart, timeout_message
+from holomj.batch.engine import DEFAULT_TIMEOUT_S, EngineRun, OnDone, timeout_message
 from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult, failed_result
 from holomj.batch.resume import clean_partial
@@ -91,19 +91,12 @@ class RayEngine:
         self.timeout_s = timeout_s
         self.function = function
 
-    def run(
-        self,
-        jobs: Sequence[Job],
-        out_dir: Path,
-        options: JobOptions,
-        on_start: OnStart,
-        on_done: OnDone,
-    ) -> None:
+    def run(self, jobs: Sequence[Job], run: EngineRun) -> None:
         """Run ``jobs`` on Ray workers; connect first and disconnect afterwards."""
         ray = import_ray()
         owned = self._connect(ray)
         try:
-            self._run(ray, list(jobs), Path(out_dir).absolute(), options, on_start, on_done)
+            self._run(ray, list(jobs), replace(run, out_dir=Path(run.out_dir).absolute()))
         finally:
             if owned:
                 ray.shutdown()
@@ -127,15 +120,8 @@ class RayEngine:
             ) from None
         return True
 
-    def _run(
-        self,
-        ray: Any,
-        jobs: list[Job],
-        out_dir: Path,
-        options: JobOptions,
-        on_start: OnStart,
-        on_done: OnDone,
-    ) -> None:
+    def _run(self, ray: Any, jobs: list[Job], run: EngineRun) -> None:
+        out_dir, on_done = run.out_dir, run.on_done
         actor_class = ray.remote(num_cpus=1, max_restarts=0, max_task_retries=0)(JobWorker)
         pending = list(reversed(jobs))
         slots = _Slots()
@@ -148,9 +134,9 @@ class RayEngine:
                 while pending and slots.idle:
                     job = pending.pop()
                     actor = slots.idle.pop()
-                    ref = actor.run.remote(self.function, job, out_dir, options)
+                    ref = actor.run.remote(self.function, job, out_dir, run.options)
                     slots.busy[ref] = (actor, job, time.monotonic())
-                    on_start(job)
+                    run.on_start(job)
                 timeout = None
                 if slots.busy:
                     first = min(started for _, _, started in slots.busy.values())

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from holomj.atomic import write_file
-from holomj.batch.engine import Engine, OnDone, OnStart
+from holomj.batch.engine import Engine, EngineRun, OnDone, OnStart
 from holomj.batch.job_list import Job
 from holomj.batch.result import JobOptions, JobResult
 from holomj.batch.resume import batch_lock, clean_partial, completed
@@ -72,7 +72,8 @@ def run_batch(
                 on_done(result)
 
         if todo:  # (a Ray engine would start a cluster for nothing)
-            engine.run(todo, out_dir, options, on_start or (lambda job: None), finished)
+            hooks = EngineRun(out_dir, options, on_start or (lambda job: None), finished)
+            engine.run(todo, hooks)
         missing = [job.id for job in todo if job.id not in results]
         if missing:
             raise HolomjError(f"engine {engine.name} reported no result", where=", ".join(missing))

@@ -28,6 +28,7 @@ from holomj.cli.robot import add_robot_command
 from holomj.cli.schema import schema_command
 from holomj.cli.tasks import tasks_command
 from holomj.cli.validate import validate_command
+from holomj.cli.vary import vary_command
 
 app = typer.Typer(
     name="holomj",
@@ -55,6 +56,7 @@ app.command("export")(export_command)
 app.command("schema")(schema_command)
 app.command("tasks")(tasks_command)
 app.command("pack")(pack_command)
+app.command("vary")(vary_command)
 
 
 def main() -> None:

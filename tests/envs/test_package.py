@@ -3,6 +3,7 @@ the model scene.xml compiles to, and an environment runs on a package."""
 
 from __future__ import annotations
 
+import json
 import shutil
 import zipfile
 from pathlib import Path
@@ -77,3 +78,18 @@ def test_an_environment_runs_on_the_mjb_package(kitchen: Path, packed: dict[str,
         env.step(env.action_space.sample())
     finally:
         env.close()
+
+
+def test_holomj_pack_writes_both_files(kitchen: Path, tmp_path: Path) -> None:
+    from typer.testing import CliRunner
+
+    from holomj.cli.app import app
+
+    runner = CliRunner()
+    result = runner.invoke(app, ["pack", str(kitchen), "-o", str(tmp_path), "--json"])
+    assert result.exit_code == 0, result.output
+    record = json.loads(result.output)
+    assert sorted(record["files"]) == ["mjb", "zip"]
+    assert (tmp_path / "scene.mjb").is_file() and (tmp_path / "scene.zip").is_file()
+    bad = runner.invoke(app, ["pack", str(kitchen), "-o", str(tmp_path), "-f", "obj"])
+    assert bad.exit_code == 2

@@ -132,7 +132,7 @@ ALLOWED: dict[str, tuple[str, tuple[str, ...]]] = {
     ),
     "holomj.envs": (
         "Gymnasium environments on scene folders: joint servo, task targets, scripted policy",
-        _holomj("spec tasks robots jobs"),
+        _holomj("spec tasks robots jobs formats"),
     ),
     "holomj.batch": (
         "many jobs on a local worker pool or Ray, resumable",

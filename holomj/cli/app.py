@@ -20,6 +20,7 @@ from holomj.cli.generate import generate_command, plan_command
 from holomj.cli.info import info_command
 from holomj.cli.layout import layout_app
 from holomj.cli.materials import materials_app
+from holomj.cli.pack import pack_command
 from holomj.cli.populate import populate_command
 from holomj.cli.refine import refine_command
 from holomj.cli.render import render_command
@@ -27,6 +28,7 @@ from holomj.cli.robot import add_robot_command
 from holomj.cli.schema import schema_command
 from holomj.cli.tasks import tasks_command
 from holomj.cli.validate import validate_command
+from holomj.cli.vary import vary_command
 
 app = typer.Typer(
     name="holomj",
@@ -53,6 +55,8 @@ app.command("refine")(refine_command)
 app.command("export")(export_command)
 app.command("schema")(schema_command)
 app.command("tasks")(tasks_command)
+app.command("pack")(pack_command)
+app.command("vary")(vary_command)
 
 
 def main() -> None:

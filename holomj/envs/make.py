@@ -10,6 +10,7 @@ import mujoco
 from holomj.envs.arm_env import SceneArmEnv
 from holomj.errors import FormatError, InputError
 from holomj.file_names import SCENE_XML, TASKS_JSON
+from holomj.formats.package import load_package
 from holomj.jobs.folder import require_scene_folder
 from holomj.jobs.tasks import read_objects, read_tasks
 from holomj.spec.base import validate_model
@@ -17,13 +18,19 @@ from holomj.spec.tasks import Task, TaskSet
 
 
 def make(
-    folder: Path | str, task: Task | str | dict[str, Any], robot: str | None = None, **options: Any
+    folder: Path | str,
+    task: Task | str | dict[str, Any],
+    robot: str | None = None,
+    package: Path | str | None = None,
+    **options: Any,
 ) -> SceneArmEnv:
     """The environment of ``task`` on the scene in ``folder`` with its attached robot.
 
     ``task``: a task, its JSON form, or the id of a task in the folder's ``tasks.json``
     (``holomj tasks OUT``). ``robot``: the robot the folder must have attached (its name or
-    spec as ``robot.json`` records it; None: whichever it has). ``options`` go to
+    spec as ``robot.json`` records it; None: whichever it has). ``package``: load the model from
+    this single-file package of the folder (``holomj pack``: ``.mjb`` loads fastest, or ``.zip``)
+    instead of compiling ``scene.xml``. ``options`` go to
     :class:`~holomj.envs.arm_env.SceneArmEnv` (frame_skip, max_delta_rad, action_mode, shaping,
     max_episode_steps, render_mode). Bad input is an InputError with the reason.
     """
@@ -43,6 +50,8 @@ def make(
             fix=f"run 'holomj add-robot {root} {robot} --replace' first",
         )
     chosen = _task(root, task)
+    if package is not None:
+        return SceneArmEnv(load_package(package), record, chosen, **options)
     try:
         model = mujoco.MjModel.from_xml_path(str(root / SCENE_XML))
     except ValueError as err:

@@ -153,7 +153,7 @@ def main() -> int:
         v: {k: mean(v, k) for k in ("compile_s", "validate_s", "njnt", "articulated_parts", "nv")}
         for v, _, _ in VARIANTS
     }
-    result = {
+    record = {
         "benchmark": "articulation",
         "prompt": PROMPT,
         "seeds": args.seeds,
@@ -174,9 +174,9 @@ def main() -> int:
         "machine": platform.machine(),
     }
     args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text(json.dumps(result, indent=2) + "\n")
+    args.out.write_text(json.dumps(record, indent=2) + "\n")
     keys = ("mean", "compile_ratio", "validate_ratio", "validate_ratio_empty")
-    print(json.dumps({k: result[k] for k in keys}, indent=2))
+    print(json.dumps({k: record[k] for k in keys}, indent=2))
     return 0
 
 

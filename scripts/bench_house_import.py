@@ -71,13 +71,13 @@ def bench_house(path: Path, library: Path, root: Path) -> dict:
     start = time.perf_counter()
     verdict = validate(out)
     validate_s = time.perf_counter() - start
-    stand = report.stand or {}
+    stand = report.stand.to_dict() if report.stand else {}
     before = stand.get("penetrations_before", {})
     after = stand.get("penetrations_after", {})
     return {
         "house": path.name,
-        "objects": stand.get("objects_imported", report.scene["objects"]),
-        "kept": stand.get("objects_kept", report.scene["objects"]),
+        "objects": stand.get("objects_imported", report.scene.objects),
+        "kept": stand.get("objects_kept", report.scene.objects),
         "kept_share": stand.get("kept_share", 1.0),
         "relocated": len(stand.get("relocated", [])),
         "left_out": len(stand.get("left_out", [])),

@@ -364,7 +364,7 @@ class PreparedRoom:
                 Item(index, obj.id, width, depth, height, bool(blocked), obj.priority, blocked)
             )
         self.index = {item.id: item.index for item in self.items}
-        self.thresholds = geo.Thresholds(
+        self.thresholds = geo.LayoutThresholds(
             near=s.near_m,
             far=s.far_m,
             in_front_max_gap=s.in_front_max_gap_m,

@@ -342,7 +342,7 @@ def _build(
 
 # --- 5. mass ----------------------------------------------------------------------------------
 def _masses(
-    built: list[Built], info: physical.CategoryInfo, given: float | None, density: float | None
+    built: list[Built], info: physical.PhysicalDefaults, given: float | None, density: float | None
 ) -> tuple[physical.MassResult, list[float]]:
     """The whole asset's mass (as for a mesh import, over all bodies) and each body's share."""
     volumes = [sum(c.volume for c in b.colliders) for b in built]

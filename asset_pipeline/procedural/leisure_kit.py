@@ -24,7 +24,7 @@ from asset_pipeline.procedural.parts import (
     Material,
     Mesh,
     Part,
-    Surface,
+    RecipeSurface,
     Vec3,
     add3,
 )
@@ -120,7 +120,7 @@ class Slab:
             float(hi[2]),
         )
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         return []
 
     def translated(self, offset: Vec3) -> Slab:

@@ -17,7 +17,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-from asset_pipeline.procedural.parts import Collider, Material, Mesh, Part, Surface, Vec3
+from asset_pipeline.procedural.parts import Collider, Material, Mesh, Part, RecipeSurface, Vec3
 
 ROLES = (
     "top",
@@ -69,7 +69,7 @@ class Tagged:
         """The wrapped part's bounds."""
         return self.part.bounds()
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         """The wrapped part's support surfaces."""
         return self.part.surfaces()
 

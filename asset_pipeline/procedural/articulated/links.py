@@ -28,7 +28,7 @@ from asset_pipeline.procedural.parts import (
     Material,
     Mesh,
     Part,
-    Surface,
+    RecipeSurface,
     Vec3,
     Vec4,
     add3,
@@ -140,7 +140,7 @@ class Moving:
     def bounds(self) -> tuple[Vec3, Vec3] | None:
         return self.part.bounds()
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         return self.part.surfaces()
 
     def translated(self, offset: Vec3) -> Moving:
@@ -177,7 +177,7 @@ class Inside:
     def bounds(self) -> tuple[Vec3, Vec3] | None:
         return self.part.bounds()
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         return self.part.surfaces()
 
     def translated(self, offset: Vec3) -> Inside:

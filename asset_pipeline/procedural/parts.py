@@ -34,7 +34,7 @@ _BOX_FACES = np.array(
 
 
 @dataclass(frozen=True)
-class Material:
+class RecipeMaterial:
     """A named colour; every material becomes one visual mesh file of the asset.
 
     ``pattern`` chooses the procedural texture the colour tints (see
@@ -158,7 +158,7 @@ class Part(Protocol):
     __dataclass_fields__: ClassVar[dict[str, Any]]
 
     @property
-    def material(self) -> Material:
+    def material(self) -> RecipeMaterial:
         """The part's material."""
 
     def mesh(self) -> Mesh | None:
@@ -187,7 +187,7 @@ class Box:
 
     center: Vec3
     half: Vec3
-    material: Material
+    material: RecipeMaterial
     visual: bool = True
     collide: bool = True
     surface: bool | Rect = False

@@ -20,8 +20,8 @@ from asset_pipeline.procedural.parts import (
     EDGE_MARGIN,
     Axis,
     Collider,
-    Material,
     Mesh,
+    RecipeMaterial,
     RecipeSurface,
     Vec3,
     add3,
@@ -70,7 +70,7 @@ class Lathe:
 
     base: Vec3
     outer: tuple[tuple[float, float], ...]
-    material: Material
+    material: RecipeMaterial
     hollow: tuple[float, float] | None = None
     visual: bool = True
     collide: bool = True
@@ -135,7 +135,7 @@ class Cylinder:
     center: Vec3
     radius: float
     half_length: float
-    material: Material
+    material: RecipeMaterial
     axis: Axis = "z"
     visual: bool = True
     collide: bool = True
@@ -194,7 +194,7 @@ class Sphere:
 
     center: Vec3
     radius: float
-    material: Material
+    material: RecipeMaterial
     cut: float | None = None
     rings: int = 10
     visual: bool = True

@@ -26,9 +26,9 @@ from asset_pipeline.procedural.parts import (
     EDGE_MARGIN,
     Box,
     Collider,
-    Material,
     Mesh,
     Part,
+    RecipeMaterial,
     RecipeSurface,
     Vec3,
     add3,
@@ -62,7 +62,7 @@ class EllipticSlab:
     a: float
     b: float
     half_height: float
-    material: Material
+    material: RecipeMaterial
     surface: bool = False
 
     def mesh(self) -> Mesh | None:

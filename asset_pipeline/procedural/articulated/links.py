@@ -25,9 +25,9 @@ import numpy as np
 
 from asset_pipeline.procedural.parts import (
     Collider,
-    Material,
     Mesh,
     Part,
+    RecipeMaterial,
     RecipeSurface,
     Vec3,
     Vec4,
@@ -122,7 +122,7 @@ class Moving:
 
     part: Part
     link: Link
-    material: Material = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
+    material: RecipeMaterial = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
 
     def __post_init__(self) -> None:
         inner = self.part.material
@@ -159,7 +159,7 @@ class Inside:
 
     part: Part
     behind: tuple[str, ...]
-    material: Material = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
+    material: RecipeMaterial = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
 
     def __post_init__(self) -> None:
         inner = self.part.material

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from asset_pipeline.kinematics import JointInfo, Kinematics, joint_motion, transformed
-from asset_pipeline.load import Part
+from asset_pipeline.load import MeshPart
 from asset_pipeline.normalise import _UP, Front, Normalisation, UpAxis, normalise
 from asset_pipeline.repair import Repaired
 from holomj.errors import FormatError
@@ -34,7 +34,7 @@ class Body:
     links: list[str]
     joint: JointInfo | None = None
     parent: str | None = None
-    parts: list[Part] = field(default_factory=list)
+    parts: list[MeshPart] = field(default_factory=list)
     merged_joints: list[str] = field(default_factory=list)
     record: dict = field(default_factory=dict)
 

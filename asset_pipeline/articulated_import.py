@@ -240,7 +240,7 @@ def import_articulated(path: Path | str, asset_id: str, options: ImportOptions) 
 
 
 @dataclass
-class _Processed:
+class _ProcessedArticulation:
     """An articulated file after the geometry steps: its format and kinematic tree, the frame
     it was normalised into, every body built (the carcass first) and the warnings so far."""
 
@@ -255,7 +255,7 @@ class _Processed:
 
 def _processed(
     path: Path, options: ImportOptions, timer: StepTimer, files: dict[str, bytes]
-) -> _Processed:
+) -> _ProcessedArticulation:
     """Load the file, split it into bodies at the closed pose, normalise them together and
     build each (repair, decomposition, visual and collision files into ``files``), timed."""
     where = str(path)
@@ -275,10 +275,10 @@ def _processed(
     textures: dict[str, str] = {}
     built = [_build(body, options, files, textures, where) for body in everything]
     timer.lap("decompose")
-    return _Processed(fmt, kin, up_axis, front, frame, built, warnings)
+    return _ProcessedArticulation(fmt, kin, up_axis, front, frame, built, warnings)
 
 
-def _source_report(path: Path, done: _Processed, sidecar: Sidecar) -> dict[str, Any]:
+def _source_report(path: Path, done: _ProcessedArticulation, sidecar: Sidecar) -> dict[str, Any]:
     """The report's section on the file read."""
     kin = done.kin
     return {
@@ -342,7 +342,7 @@ def _build(
 
 # --- 5. mass ----------------------------------------------------------------------------------
 def _masses(
-    built: list[Built], info: physical.CategoryInfo, given: float | None, density: float | None
+    built: list[Built], info: physical.PhysicalDefaults, given: float | None, density: float | None
 ) -> tuple[physical.MassResult, list[float]]:
     """The whole asset's mass (as for a mesh import, over all bodies) and each body's share."""
     volumes = [sum(c.volume for c in b.colliders) for b in built]

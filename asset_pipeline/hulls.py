@@ -38,7 +38,7 @@ TINY_VOLUME_M3 = 1e-9
 
 
 @dataclass(frozen=True)
-class Collider:
+class HullCollider:
     """A convex hull (vertices, outward faces) or a box (half sizes, pos, quat wxyz)."""
 
     kind: str
@@ -74,7 +74,7 @@ class Collider:
 
 @dataclass(frozen=True)
 class HullSet:
-    colliders: list[Collider]
+    colliders: list[HullCollider]
     maxhullvert: int
     quality: dict
 
@@ -85,7 +85,7 @@ class HullSet:
 
 
 def collision_records(
-    colliders: list[Collider], files: dict[str, bytes], prefix: str = ""
+    colliders: list[HullCollider], files: dict[str, bytes], prefix: str = ""
 ) -> list[dict[str, Any]]:
     """The ``collision`` records of ``colliders``; each hull's OBJ goes into ``files`` as
     ``{prefix}hull_KK.obj`` (K: the collider's index)."""
@@ -117,7 +117,7 @@ def postprocess(
 ) -> HullSet:
     """Turn raw hull point sets into colliders; see the module docstring."""
     lo, hi = mesh.bounds
-    hulls: list[Collider] = []
+    hulls: list[HullCollider] = []
     slivers: list[np.ndarray] = []
     capped = pulled = 0
     for raw in raw_hulls:
@@ -136,7 +136,7 @@ def postprocess(
             slivers.append(points if points is not None else raw)
             continue
         hulls.append(collider)
-    boxes: list[Collider] = []
+    boxes: list[HullCollider] = []
     dropped = 0
     for points in slivers:
         box = _box_collider(points)
@@ -238,7 +238,7 @@ def _pull_inside(
     return _hull_vertices(moved), True
 
 
-def _mesh_collider(points: np.ndarray) -> Collider | None:
+def _mesh_collider(points: np.ndarray) -> HullCollider | None:
     points = rounded(points)
     try:
         hull = ConvexHull(points)
@@ -253,7 +253,7 @@ def _mesh_collider(points: np.ndarray) -> Collider | None:
     inward = np.einsum("ij,ij->i", normal, hull.equations[:, :3]) < 0
     faces[inward] = faces[inward][:, ::-1]
     order = np.lexsort(np.sort(index[faces], axis=1).T[::-1])
-    return Collider(
+    return HullCollider(
         kind="mesh", volume=float(hull.volume), vertices=points[used], faces=index[faces][order]
     )
 
@@ -275,7 +275,7 @@ def _principal_extents(points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.n
     return hi - lo, axes, centre
 
 
-def _box_collider(points: np.ndarray) -> Collider:
+def _box_collider(points: np.ndarray) -> HullCollider:
     """A box along the principal axes of ``points``, at least 1 mm thick."""
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     if len(points) < 3:
@@ -288,7 +288,7 @@ def _box_collider(points: np.ndarray) -> Collider:
     sx, sy, sz = (round(float(h), 6) for h in half)
     px, py, pz = (round(float(c), 6) for c in centre)
     qw, qx, qy, qz = (round(float(q), 8) for q in quat)
-    return Collider(
+    return HullCollider(
         kind="box",
         volume=float(8 * np.prod((sx, sy, sz))),
         size=(sx, sy, sz),
@@ -297,7 +297,7 @@ def _box_collider(points: np.ndarray) -> Collider:
     )
 
 
-def _covered(points: np.ndarray, hulls: list[Collider], margin: float = 0.001) -> bool:
+def _covered(points: np.ndarray, hulls: list[HullCollider], margin: float = 0.001) -> bool:
     """True when every point lies inside one of ``hulls`` (within ``margin``)."""
     for hull in hulls:
         equations = ConvexHull(hull.vertices).equations

@@ -136,7 +136,7 @@ def derived_meta(
     size: Sequence[float],
     mass_kg: float,
     density_kg_m3: float,
-    info: physical.CategoryInfo,
+    info: physical.PhysicalDefaults,
     placement: Sequence[str],
     geometry: dict[str, Any],
     source: str,
@@ -220,7 +220,7 @@ def visual_records(
 
 def physical_record(
     meta: AssetMeta,
-    info: physical.CategoryInfo,
+    info: physical.PhysicalDefaults,
     massed: physical.MassResult,
     category_source: str,
 ) -> dict[str, Any]:

@@ -111,7 +111,7 @@ def import_asset(
 
 
 @dataclass(frozen=True)
-class _Processed:
+class _ProcessedMesh:
     """A mesh file after the geometry steps: loaded, normalised, repaired, decomposed into
     hulls, with its support surfaces."""
 
@@ -124,7 +124,7 @@ class _Processed:
     surfaces: list[Surface]
 
 
-def _processed(path: Path, options: ImportOptions, timer: StepTimer) -> _Processed:
+def _processed(path: Path, options: ImportOptions, timer: StepTimer) -> _ProcessedMesh:
     """The geometry steps of an import (load, normalise, repair, decompose, hulls, surfaces),
     each timed."""
     loaded = load_file(path, options.max_faces)
@@ -143,11 +143,11 @@ def _processed(path: Path, options: ImportOptions, timer: StepTimer) -> _Process
     timer.lap("hulls")
     surfaces = support_surfaces(repaired.physics)
     timer.lap("surfaces")
-    return _Processed(loaded, up_axis, frame, repaired, decomposition, hullset, surfaces)
+    return _ProcessedMesh(loaded, up_axis, frame, repaired, decomposition, hullset, surfaces)
 
 
 def _report(
-    path: Path, sidecar: Sidecar, mesh: _Processed, options: ImportOptions
+    path: Path, sidecar: Sidecar, mesh: _ProcessedMesh, options: ImportOptions
 ) -> dict[str, Any]:
     """The report's sections on the source file and the geometry steps."""
     decomposition = mesh.decomposition

@@ -13,7 +13,7 @@ from typing import Literal
 
 import numpy as np
 
-from asset_pipeline.load import Material, Part
+from asset_pipeline.load import MeshMaterial, MeshPart
 
 DEFAULT_RGBA = (0.7, 0.7, 0.7, 1.0)  # what load.py gives a mesh without a material
 
@@ -25,7 +25,7 @@ class LinkGeometry:
     """A link (a body of the file) and its meshes in the model frame; ``where`` names it."""
 
     name: str
-    parts: list[Part]
+    parts: list[MeshPart]
     where: str
 
 
@@ -87,7 +87,7 @@ class Kinematics:
         return sum(len(p.vertices) for link in self.links.values() for p in link.parts)
 
 
-def transformed(part: Part, matrix: np.ndarray) -> Part:
+def transformed(part: MeshPart, matrix: np.ndarray) -> MeshPart:
     """``part`` with its vertices mapped by the 4x4 affine ``matrix`` (faces flipped when the
     map mirrors, so they stay outward)."""
     vertices = part.vertices @ matrix[:3, :3].T + matrix[:3, 3]
@@ -97,17 +97,17 @@ def transformed(part: Part, matrix: np.ndarray) -> Part:
     return replace(part, vertices=vertices, faces=faces)
 
 
-def coloured(part: Part, rgba: tuple[float, float, float, float] | None) -> Part:
+def coloured(part: MeshPart, rgba: tuple[float, float, float, float] | None) -> MeshPart:
     """``part`` painted ``rgba`` when it has no material of its own (plain grey, no texture)."""
     if rgba is None or part.material.texture_png is not None:
         return part
     if part.material.rgba != DEFAULT_RGBA:
         return part
     r, g, b, a = rgba
-    return replace(part, material=Material(rgba=(r, g, b, a), name=part.material.name))
+    return replace(part, material=MeshMaterial(rgba=(r, g, b, a), name=part.material.name))
 
 
-def primitive(kind: str, size: tuple[float, ...]) -> Part:
+def primitive(kind: str, size: tuple[float, ...]) -> MeshPart:
     """A triangle mesh of a box (full extents), cylinder (radius, length, along z), sphere
     (radius) or capsule (radius, length), centred at the origin."""
     import trimesh
@@ -125,11 +125,11 @@ def primitive(kind: str, size: tuple[float, ...]) -> Part:
         mesh.vertices = mesh.vertices * np.asarray(size[:3])
     else:
         raise ValueError(kind)
-    return Part(
+    return MeshPart(
         vertices=np.asarray(mesh.vertices, dtype=np.float64),
         faces=np.asarray(mesh.faces, dtype=np.int64),
         uv=None,
-        material=Material(rgba=DEFAULT_RGBA),
+        material=MeshMaterial(rgba=DEFAULT_RGBA),
     )
 
 

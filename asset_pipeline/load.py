@@ -22,7 +22,7 @@ MAX_TEXTURE_PX = 2048
 
 
 @dataclass(frozen=True)
-class Material:
+class MeshMaterial:
     """What MuJoCo can show of a material: a colour and an optional PNG texture."""
 
     rgba: tuple[float, float, float, float]
@@ -37,13 +37,13 @@ class Material:
 
 
 @dataclass(frozen=True)
-class Part:
+class MeshPart:
     """A triangle mesh in file coordinates with one material; ``uv`` is per vertex or None."""
 
     vertices: np.ndarray
     faces: np.ndarray
     uv: np.ndarray | None
-    material: Material
+    material: MeshMaterial
 
 
 @dataclass(frozen=True)
@@ -52,7 +52,7 @@ class LoadedFile:
 
     path: Path
     format: str
-    parts: list[Part]
+    parts: list[MeshPart]
     warnings: list[str] = field(default_factory=list)
 
     @property
@@ -130,7 +130,7 @@ def _geometries(scene, where: str) -> list:
     return [g for g in items if isinstance(g, trimesh.Trimesh) and len(g.faces) > 0]
 
 
-def _part(geometry, warnings: list[str], pngs: dict[int, bytes]) -> Part | None:
+def _part(geometry, warnings: list[str], pngs: dict[int, bytes]) -> MeshPart | None:
     vertices = np.asarray(geometry.vertices, dtype=np.float64)
     faces = np.asarray(geometry.faces, dtype=np.int64)
     if faces.ndim != 2 or faces.shape[1] != 3 or len(vertices) == 0:
@@ -139,12 +139,12 @@ def _part(geometry, warnings: list[str], pngs: dict[int, bytes]) -> Part | None:
         warnings.append("dropped a part whose faces index missing vertices")
         return None
     material, uv = _material(geometry, len(vertices), warnings, pngs)
-    return Part(vertices=vertices, faces=faces, uv=uv, material=material)
+    return MeshPart(vertices=vertices, faces=faces, uv=uv, material=material)
 
 
 def _material(
     geometry, n_vertices: int, warnings: list[str], pngs: dict[int, bytes]
-) -> tuple[Material, np.ndarray | None]:
+) -> tuple[MeshMaterial, np.ndarray | None]:
     """Base colour, texture and UVs of a trimesh geometry's visual."""
     visual = geometry.visual
     kind = getattr(visual, "kind", None)
@@ -168,21 +168,21 @@ def _material(
             warnings.append(f"material {name!r}: texture dropped (no per-vertex UVs)")
             image = None
         if image is None:
-            return Material(rgba=rgba, name=name), None
+            return MeshMaterial(rgba=rgba, name=name), None
         uv = np.asarray(uv, dtype=np.float64)
         if not np.isfinite(uv).all():
             warnings.append(f"material {name!r}: texture dropped (non-finite UVs)")
-            return Material(rgba=rgba, name=name), None
+            return MeshMaterial(rgba=rgba, name=name), None
         if id(image) not in pngs:
             pngs[id(image)] = _png(image)
-        return Material(rgba=rgba, texture_png=pngs[id(image)], name=name), uv
+        return MeshMaterial(rgba=rgba, texture_png=pngs[id(image)], name=name), uv
     if kind in ("face", "vertex"):
         colors = visual.face_colors if kind == "face" else visual.vertex_colors
         values, counts = np.unique(np.asarray(colors), axis=0, return_counts=True)
         if len(values) > 1:
             warnings.append(f"{len(values)} per-{kind} colours reduced to the most common one")
-        return Material(rgba=_rgba(values[int(np.argmax(counts))])), None
-    return Material(rgba=(0.7, 0.7, 0.7, 1.0)), None
+        return MeshMaterial(rgba=_rgba(values[int(np.argmax(counts))])), None
+    return MeshMaterial(rgba=(0.7, 0.7, 0.7, 1.0)), None
 
 
 def _rgba(color) -> tuple[float, float, float, float]:

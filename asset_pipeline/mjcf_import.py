@@ -27,7 +27,7 @@ import mujoco
 import numpy as np
 
 from asset_pipeline.kinematics import JointInfo, Kinematics, LinkGeometry, primitive
-from asset_pipeline.load import Material, Part
+from asset_pipeline.load import MeshMaterial, MeshPart
 from asset_pipeline.xml_tree import parse_xml, read_text
 from holomj.errors import FormatError
 
@@ -203,17 +203,17 @@ def _joint_info(
 
 def _geom_part(
     model: mujoco.MjModel, data: mujoco.MjData, geom: int, warnings: list[str]
-) -> Part | None:
+) -> MeshPart | None:
     kind = int(model.geom_type[geom])
     if kind == mujoco.mjtGeom.mjGEOM_MESH:
         mesh = int(model.geom_dataid[geom])
         first, count = int(model.mesh_vertadr[mesh]), int(model.mesh_vertnum[mesh])
         face, nface = int(model.mesh_faceadr[mesh]), int(model.mesh_facenum[mesh])
-        part = Part(
+        part = MeshPart(
             vertices=np.array(model.mesh_vert[first : first + count], dtype=np.float64),
             faces=np.array(model.mesh_face[face : face + nface], dtype=np.int64),
             uv=None,
-            material=Material(rgba=(0.7, 0.7, 0.7, 1.0)),
+            material=MeshMaterial(rgba=(0.7, 0.7, 0.7, 1.0)),
         )
     elif kind in _PRIMITIVES:
         size = model.geom_size[geom]
@@ -236,7 +236,9 @@ def _geom_part(
     material = int(model.geom_matid[geom])
     rgba = model.mat_rgba[material] if material >= 0 else model.geom_rgba[geom]
     r, g, b, a = (round(float(v), 4) for v in np.clip(rgba, 0.0, 1.0))
-    return Part(vertices=vertices, faces=part.faces, uv=None, material=Material(rgba=(r, g, b, a)))
+    return MeshPart(
+        vertices=vertices, faces=part.faces, uv=None, material=MeshMaterial(rgba=(r, g, b, a))
+    )
 
 
 def _body_name(model: mujoco.MjModel, body: int) -> str:

@@ -17,7 +17,7 @@ from typing import Literal
 
 import numpy as np
 
-from asset_pipeline.load import Part
+from asset_pipeline.load import MeshPart
 from holomj.errors import FormatError, InputError
 
 MIN_SIZE_M = 0.001
@@ -62,12 +62,12 @@ class Normalisation:
 
 
 def normalise(
-    parts: list[Part],
+    parts: list[MeshPart],
     where: str,
     up_axis: UpAxis,
     front: Front,
     size: tuple[float, float, float] | None,
-) -> tuple[list[Part], Normalisation]:
+) -> tuple[list[MeshPart], Normalisation]:
     """Transform ``parts`` into the asset frame; reject absurd sizes with FormatError."""
     if up_axis not in _UP:
         raise InputError(f"unknown up axis {up_axis!r}", fix="use 'y' or 'z'")

@@ -72,7 +72,7 @@ from holomj.spec.assets import AssetMeta
 
 if TYPE_CHECKING:
     from asset_pipeline.normalise import Normalisation
-    from asset_pipeline.physical import CategoryInfo, MassResult
+    from asset_pipeline.physical import MassResult, PhysicalDefaults
     from asset_pipeline.repair import Repaired
 
 __all__ = [
@@ -207,7 +207,7 @@ def _source_report(uid: str, mesh: ObjathorMesh) -> dict[str, Any]:
 
 def _physical_report(
     meta: AssetMeta,
-    info: CategoryInfo,
+    info: PhysicalDefaults,
     massed: MassResult,
     annotation: ObjathorAnnotation,
     category_source: str,

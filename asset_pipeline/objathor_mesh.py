@@ -12,7 +12,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from asset_pipeline.load import Material, Part
+from asset_pipeline.load import MeshMaterial, MeshPart
 from asset_pipeline.objathor_annotation import ObjathorAnnotation
 from asset_pipeline.objathor_files import (
     ALBEDO_NAMES,
@@ -41,7 +41,7 @@ class ObjathorMesh:
     source: Path
     format: str  # pkl, msgpack, json, obj, glb, gltf
     frame: Literal["unity", "gltf"]
-    parts: list[Part]
+    parts: list[MeshPart]
     colliders: list[np.ndarray] | None  # convex piece point sets, source frame; None: none
     y_rot_offset_deg: float = 0.0
     receptacle_candidate: bool | None = None
@@ -128,7 +128,7 @@ def _mesh_from_dict(data: Any, path: Path, fmt: str, max_faces: int) -> Objathor
         warnings.append(f"{where}: yRotOffset ignored (not a number)")
         y_rot = 0.0
     receptacle = data.get("receptacleCandidate")
-    part = Part(vertices=vertices, faces=faces, uv=uv, material=material)
+    part = MeshPart(vertices=vertices, faces=faces, uv=uv, material=material)
     return ObjathorMesh(
         source=path,
         format=fmt,
@@ -231,9 +231,9 @@ def _texture_path(value: Any, folder: Path) -> Path | None:
 
 def _material(
     texture_path: Path | None, uv: np.ndarray | None, warnings: list[str], folder: Path
-) -> tuple[Material, np.ndarray | None]:
+) -> tuple[MeshMaterial, np.ndarray | None]:
     """A white textured material when the albedo texture and UVs are there, else grey."""
-    grey = Material(rgba=(0.7, 0.7, 0.7, 1.0), name="objathor")
+    grey = MeshMaterial(rgba=(0.7, 0.7, 0.7, 1.0), name="objathor")
     if texture_path is None:
         warnings.append(f"{folder}: no albedo texture (albedo.jpg); the asset is plain grey")
         return grey, None
@@ -243,7 +243,7 @@ def _material(
     png = _png(texture_path, warnings)
     if png is None:
         return grey, None
-    return Material(rgba=(1.0, 1.0, 1.0, 1.0), texture_png=png, name="objathor"), uv
+    return MeshMaterial(rgba=(1.0, 1.0, 1.0, 1.0), texture_png=png, name="objathor"), uv
 
 
 def _png(path: Path, warnings: list[str]) -> bytes | None:
@@ -276,7 +276,7 @@ def _read_geometry(path: Path, max_faces: int) -> ObjathorMesh:
     if all(p.material.texture_png is None for p in parts) and texture is not None:
         png = _png(texture, warnings)
         if png is not None and any(p.uv is not None for p in parts):
-            material = Material(rgba=(1.0, 1.0, 1.0, 1.0), texture_png=png, name="objathor")
+            material = MeshMaterial(rgba=(1.0, 1.0, 1.0, 1.0), texture_png=png, name="objathor")
             parts = [
                 dataclasses.replace(p, material=material) if p.uv is not None else p for p in parts
             ]
@@ -305,7 +305,9 @@ def unity_to_asset(y_rot_offset_deg: float = 0.0) -> np.ndarray:
     return UNITY_TO_ASSET @ unity_yaw(y_rot_offset_deg)
 
 
-def gltf_to_asset(parts: list[Part], annotation: ObjathorAnnotation) -> tuple[np.ndarray, float]:
+def gltf_to_asset(
+    parts: list[MeshPart], annotation: ObjathorAnnotation
+) -> tuple[np.ndarray, float]:
     """(matrix, scale) canonicalising an original glTF as objathor does (module docstring)."""
     to_blender = _GLTF_TO_BLENDER
     points = np.concatenate([p.vertices for p in parts]) @ to_blender.T

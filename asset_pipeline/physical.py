@@ -43,7 +43,7 @@ NEARLY_CLOSED_TOL = 0.1  # spread of the signed volume over origins, relative to
 
 
 @dataclass(frozen=True)
-class CategoryInfo:
+class PhysicalDefaults:
     """One category's physical defaults.
 
     ``density_kg_m3`` is the density of the category's material itself (oak, sheet steel,
@@ -115,7 +115,7 @@ def materials() -> list[str]:
     return sorted(k for k in _table()["materials"] if not k.startswith("_"))
 
 
-def category_info(name: str, size: tuple[float, float, float] | None = None) -> CategoryInfo:
+def category_info(name: str, size: tuple[float, float, float] | None = None) -> PhysicalDefaults:
     """The table's entry for ``name`` (case and separators ignored), else the default."""
     key = normalise_category(name)
     for category, row in _table()["categories"].items():
@@ -126,9 +126,9 @@ def category_info(name: str, size: tuple[float, float, float] | None = None) -> 
     return _info(name, row, known=False, placement=("object",) if small else ("floor",))
 
 
-def _info(name: str, row: dict, known: bool, placement: tuple[str, ...]) -> CategoryInfo:
+def _info(name: str, row: dict, known: bool, placement: tuple[str, ...]) -> PhysicalDefaults:
     material = _table()["materials"][row["material"]]
-    return CategoryInfo(
+    return PhysicalDefaults(
         name=name,
         known=known,
         material=row["material"],
@@ -273,7 +273,7 @@ def _signed_volume(body: trimesh.Trimesh, origin: np.ndarray) -> float:
 
 
 def resolve_mass(
-    info: CategoryInfo,
+    info: PhysicalDefaults,
     mesh: trimesh.Trimesh,
     collision_volume: float,
     given: float | None = None,

@@ -22,7 +22,7 @@ import trimesh
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import breadth_first_order, connected_components
 
-from asset_pipeline.load import Material, Part
+from asset_pipeline.load import MeshMaterial, MeshPart
 
 WELD_M = 1e-6
 MIN_FACE_AREA_M2 = 1e-14
@@ -35,7 +35,7 @@ class VisualMesh:
     vertices: np.ndarray
     faces: np.ndarray
     uv: np.ndarray | None
-    material: Material
+    material: MeshMaterial
 
 
 @dataclass(frozen=True)
@@ -47,9 +47,9 @@ class Repaired:
     stats: dict = field(default_factory=dict)
 
 
-def repair(parts: list[Part]) -> Repaired:
+def repair(parts: list[MeshPart]) -> Repaired:
     """Weld, clean and orient ``parts`` (already in the asset frame)."""
-    groups: dict[tuple, list[Part]] = {}
+    groups: dict[tuple, list[MeshPart]] = {}
     for part in parts:
         groups.setdefault(part.material.key, []).append(part)
     group_list = list(groups.values())
@@ -113,7 +113,7 @@ def repair(parts: list[Part]) -> Repaired:
 
 
 def _stacked(
-    group_list: list[list[Part]],
+    group_list: list[list[MeshPart]],
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """All parts' vertices, faces (indices into them), each face's material group and each
     vertex's texture coordinates (zeros where its material is untextured) in one array each."""
@@ -142,7 +142,7 @@ def _stacked(
 
 
 def _visual(
-    vertices: np.ndarray, uv: np.ndarray | None, faces: np.ndarray, part: Part
+    vertices: np.ndarray, uv: np.ndarray | None, faces: np.ndarray, part: MeshPart
 ) -> VisualMesh:
     """Compact one material's faces, merging vertices equal in position (and UV)."""
     used = np.unique(faces)

@@ -49,7 +49,7 @@ import numpy as np
 
 from asset_pipeline.load import FORMATS
 from asset_pipeline.xml_tree import (
-    Node,
+    XmlNode,
     attr_float,
     attr_floats,
     attr_vec3,
@@ -217,14 +217,14 @@ def _tree_order(joints: list[UrdfJoint], roots: list[str]) -> list[UrdfJoint]:
     return ordered
 
 
-def _name(node: Node, where: str) -> str:
+def _name(node: XmlNode, where: str) -> str:
     name = node.attrib.get("name", "").strip()
     if not name:
         raise FormatError(f"<{node.tag}> (line {node.line}) has no name", where=where)
     return name
 
 
-def _link(node: Node, name: str, path: Path, materials: dict, warnings: list[str]) -> UrdfLink:
+def _link(node: XmlNode, name: str, path: Path, materials: dict, warnings: list[str]) -> UrdfLink:
     where = str(path)
     label = f"link {name!r} (line {node.line})"
     elements = node.findall("visual") or node.findall("collision")
@@ -246,7 +246,7 @@ def _link(node: Node, name: str, path: Path, materials: dict, warnings: list[str
 
 
 def _geometry(
-    node: Node, origin: np.ndarray, rgba, what: str, path: Path, warnings: list[str]
+    node: XmlNode, origin: np.ndarray, rgba, what: str, path: Path, warnings: list[str]
 ) -> Geometry:
     where = str(path)
     if node.tag == "mesh":
@@ -306,7 +306,7 @@ def resolve_mesh(filename: str, base: Path, what: str, where: str) -> Path:
     raise FormatError(f"{what}: mesh file not found", where=where, fix="check the filename")
 
 
-def _joint(node: Node, links: dict, where: str, warnings: list[str]) -> UrdfJoint:
+def _joint(node: XmlNode, links: dict, where: str, warnings: list[str]) -> UrdfJoint:
     name = _name(node, where)
     label = f"joint {name!r} (line {node.line})"
     kind = node.attrib.get("type", "").strip()
@@ -372,7 +372,7 @@ def _joint(node: Node, links: dict, where: str, warnings: list[str]) -> UrdfJoin
     )
 
 
-def _colour(node: Node, where: str) -> tuple[float, float, float, float] | None:
+def _colour(node: XmlNode, where: str) -> tuple[float, float, float, float] | None:
     colour = node.find("color")
     if colour is None:
         return None

@@ -17,19 +17,19 @@ MAX_FILE_BYTES = 50_000_000
 
 
 @dataclass
-class Node:
+class XmlNode:
     """An XML element: tag, attributes, children and the line it starts on."""
 
     tag: str
     attrib: dict[str, str]
     line: int
-    children: list[Node] = field(default_factory=list)
+    children: list[XmlNode] = field(default_factory=list)
 
-    def find(self, tag: str) -> Node | None:
+    def find(self, tag: str) -> XmlNode | None:
         """The first child with ``tag``."""
         return next((c for c in self.children if c.tag == tag), None)
 
-    def findall(self, tag: str) -> list[Node]:
+    def findall(self, tag: str) -> list[XmlNode]:
         """Every child with ``tag``."""
         return [c for c in self.children if c.tag == tag]
 
@@ -40,17 +40,17 @@ class Node:
             yield from child.iter()
 
 
-def parse_xml(data: bytes | str, where: str) -> Node:
+def parse_xml(data: bytes | str, where: str) -> XmlNode:
     """The root element of ``data``; FormatError for anything that is not plain XML.
 
     DOCTYPE declarations (and with them entity definitions) are refused.
     """
     parser = xml.parsers.expat.ParserCreate()
-    stack: list[Node] = []
-    roots: list[Node] = []
+    stack: list[XmlNode] = []
+    roots: list[XmlNode] = []
 
     def start(tag: str, attrib: dict[str, str]) -> None:
-        node = Node(tag, dict(attrib), parser.CurrentLineNumber)
+        node = XmlNode(tag, dict(attrib), parser.CurrentLineNumber)
         if stack:
             stack[-1].children.append(node)
         else:
@@ -91,7 +91,7 @@ def read_text(path: Path) -> bytes:
     return path.read_bytes()
 
 
-def origin_transform(node: Node | None, what: str, where: str) -> np.ndarray:
+def origin_transform(node: XmlNode | None, what: str, where: str) -> np.ndarray:
     """The 4x4 transform of an ``<origin xyz rpy>`` (identity when absent)."""
     transform = np.eye(4)
     if node is None:
@@ -125,7 +125,7 @@ _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 
 def attr_floats(
-    node: Node,
+    node: XmlNode,
     key: str,
     count: int,
     what: str,
@@ -153,7 +153,7 @@ def attr_floats(
 
 
 def attr_vec3(
-    node: Node,
+    node: XmlNode,
     key: str,
     what: str,
     where: str,
@@ -164,7 +164,9 @@ def attr_vec3(
     return (x, y, z)
 
 
-def attr_float(node: Node, key: str, what: str, where: str, default: float | None = None) -> float:
+def attr_float(
+    node: XmlNode, key: str, what: str, where: str, default: float | None = None
+) -> float:
     """The one number of attribute ``key`` of ``node`` (see :func:`attr_floats`)."""
     return attr_floats(node, key, 1, what, where, None if default is None else (default,))[0]
 

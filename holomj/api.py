@@ -26,15 +26,24 @@ if TYPE_CHECKING:
     from holomj.spec.report import StabilityReport
 
 
-class AssetLibrary(_StoreLibrary):
-    """An asset library on disk: ``AssetLibrary.open(path)``, or ``AssetLibrary.default()``."""
+class PublicAssetLibrary(_StoreLibrary):
+    """``holomj.AssetLibrary``: an asset library on disk, ``AssetLibrary.open(path)``, or
+    ``AssetLibrary.default()``.
+
+    The store's :class:`holomj.library.store.AssetLibrary` plus :meth:`default`, which builds
+    the default library through :mod:`holomj.jobs.library`: the library package itself may not
+    import that layer, so the public class adds it here.
+    """
 
     @classmethod
-    def default(cls) -> AssetLibrary:
+    def default(cls) -> PublicAssetLibrary:
         """The default library (``$HOLOMJ_HOME/library``), built on first use like the CLI's."""
         from holomj.jobs.library import resolve_library
 
         return cls.open(resolve_library(None))
+
+
+AssetLibrary = PublicAssetLibrary  # the public name (``holomj.AssetLibrary``, README)
 
 
 def _library_root(library: Path | str | AssetLibrary | None) -> Path:

@@ -20,13 +20,13 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder
 
-MIRROR = Material("mirror_glass", (0.78, 0.84, 0.86, 1.0), 1.0, 1.0, "mirror")
-BLACK_APPLIANCE = Material("black_appliance", (0.10, 0.10, 0.11, 1.0), 0.7, 0.7, "black")
-OVEN_GLASS = Material("oven_glass", (0.05, 0.05, 0.06, 1.0), 0.9, 0.9, "dark glass")
+MIRROR = RecipeMaterial("mirror_glass", (0.78, 0.84, 0.86, 1.0), 1.0, 1.0, "mirror")
+BLACK_APPLIANCE = RecipeMaterial("black_appliance", (0.10, 0.10, 0.11, 1.0), 0.7, 0.7, "black")
+OVEN_GLASS = RecipeMaterial("oven_glass", (0.05, 0.05, 0.06, 1.0), 0.9, 0.9, "dark glass")
 APPLIANCE_FINISHES = (WHITE_LACQUER, STEEL, BLACK_APPLIANCE)
 _NUM = {1: "one", 2: "two", 3: "three", 4: "four", 6: "six"}
 

@@ -41,9 +41,9 @@ from asset_pipeline.procedural.asset_records import (
 from asset_pipeline.procedural.obj_writer import merge_meshes, obj_bytes, rounded
 from asset_pipeline.procedural.parts import (
     Collider,
-    Material,
     Mesh,
     Part,
+    RecipeMaterial,
     Vec3,
     hull_collider,
 )
@@ -161,7 +161,7 @@ def material_visuals(
 ) -> tuple[list[VisualPart], list[Mesh]]:
     """One OBJ file per material of ``parts`` (added to ``files``, named ``<prefix>_<material>``
     or ``<material>``, textured when the design is) and its visual record; also the meshes."""
-    by_material: dict[str, tuple[Material, list[Mesh]]] = {}
+    by_material: dict[str, tuple[RecipeMaterial, list[Mesh]]] = {}
     for part in parts:
         mesh = part.mesh()
         if mesh is not None:

@@ -13,7 +13,7 @@ from asset_pipeline.procedural.parts import (
     Collider,
     Mesh,
     Part,
-    Surface,
+    RecipeSurface,
 )
 from holomj.spec.assets import CollisionPart, SupportSurface
 
@@ -128,7 +128,7 @@ def _hull_mesh(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return points[used], index[faces]
 
 
-def surface_record(surface: Surface) -> SupportSurface:
+def surface_record(surface: RecipeSurface) -> SupportSurface:
     polygon = [(meta_round(x), meta_round(y)) for x, y in surface.polygon]
     area = 0.0
     for (x0, y0), (x1, y1) in zip(polygon, polygon[1:] + polygon[:1], strict=True):

@@ -19,7 +19,7 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe
 from asset_pipeline.procedural.storage import (
@@ -34,7 +34,7 @@ from asset_pipeline.procedural.storage import (
 
 # --- kitchen and bathroom fixtures -----------------------------------------------------------
 def _faucet(
-    x_back: float, y: float, z: float, height: float, reach: float, metal: Material
+    x_back: float, y: float, z: float, height: float, reach: float, metal: RecipeMaterial
 ) -> list[Part]:
     """A faucet standing at (x_back, y) on height z: a column and a spout reaching +X."""
     r = 0.015

@@ -46,7 +46,7 @@ from asset_pipeline.procedural.attribute_words import (
 )
 from asset_pipeline.procedural.attributes import Attributes, PartAttributes
 from asset_pipeline.procedural.finishes import finished, main_material, recoloured, styled
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import CategoryInfo, Design, rng_for
 from asset_pipeline.procedural.roles import ROLES, role_of, with_material
 from asset_pipeline.procedural.shaped import (
@@ -233,7 +233,7 @@ def _finished_parts(
 ) -> tuple[Part, ...]:
     """``parts`` with those at ``indices`` finished as ``request`` asks (one new material per
     material replaced), the design's words following."""
-    made: dict[str, Material] = {}
+    made: dict[str, RecipeMaterial] = {}
     out = list(parts)
     for k in indices:
         base = parts[k].material

@@ -16,11 +16,11 @@ from asset_pipeline.procedural.attribute_words import (
     colour_rgb,
 )
 from asset_pipeline.procedural.attributes import Attributes
-from asset_pipeline.procedural.parts import Material, Mesh, Part
+from asset_pipeline.procedural.parts import Mesh, Part, RecipeMaterial
 from asset_pipeline.procedural.roles import with_material
 
 
-def family_of(material: Material) -> str:
+def family_of(material: RecipeMaterial) -> str:
     """The family of an existing palette material, from its name."""
     name = material.name
     for word, family in (
@@ -51,7 +51,7 @@ def family_of(material: Material) -> str:
     return "other"
 
 
-def styled(attributes: Attributes, base: Material) -> Attributes:
+def styled(attributes: Attributes, base: RecipeMaterial) -> Attributes:
     """``attributes`` with the style's bias filled in when no colour or material is asked."""
     if attributes.style is None or attributes.colour or attributes.material:
         return attributes
@@ -65,7 +65,7 @@ def styled(attributes: Attributes, base: Material) -> Attributes:
     return replace(attributes, material=material, colour=colour)
 
 
-def finished(base: Material, attributes: Attributes) -> Material:
+def finished(base: RecipeMaterial, attributes: Attributes) -> RecipeMaterial:
     """The material replacing ``base`` under ``attributes`` (colour and/or material)."""
     rgba, specular, shininess = base.rgba, base.specular, base.shininess
     label_parts = []
@@ -82,7 +82,7 @@ def finished(base: Material, attributes: Attributes) -> Material:
     elif "leather" in base.name:
         label_parts.append("leather")
     slug = re.sub(r"[^a-z0-9]+", "_", " ".join(label_parts)).strip("_")
-    return Material(
+    return RecipeMaterial(
         f"{base.name}__{slug}",
         _rounded_rgba(rgba),
         specular,
@@ -97,10 +97,10 @@ def _mesh_area(mesh: Mesh) -> float:
     return float(0.5 * np.linalg.norm(cross, axis=1).sum())
 
 
-def main_material(parts: tuple[Part, ...] | list[Part]) -> Material:
+def main_material(parts: tuple[Part, ...] | list[Part]) -> RecipeMaterial:
     """The material of the largest visual surface area (secondary materials only if alone)."""
     area: dict[str, float] = {}
-    by_name: dict[str, Material] = {}
+    by_name: dict[str, RecipeMaterial] = {}
     for part in parts:
         mesh = part.mesh()
         if mesh is None:
@@ -112,7 +112,9 @@ def main_material(parts: tuple[Part, ...] | list[Part]) -> Material:
     return by_name[best]
 
 
-def recoloured(parts: tuple[Part, ...], base: Material, material: Material) -> tuple[Part, ...]:
+def recoloured(
+    parts: tuple[Part, ...], base: RecipeMaterial, material: RecipeMaterial
+) -> tuple[Part, ...]:
     """``parts`` with every part of material ``base`` made of ``material``."""
     return tuple(with_material(p, material) if p.material.name == base.name else p for p in parts)
 

@@ -18,11 +18,11 @@ from asset_pipeline.procedural.kit import (
     square_legs,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.roles import tagged
 
-WHITE_CHAIR = Material("white_chair", (0.93, 0.92, 0.90, 1.0), 0.3, 0.4, "white painted")
+WHITE_CHAIR = RecipeMaterial("white_chair", (0.93, 0.92, 0.90, 1.0), 0.3, 0.4, "white painted")
 
 
 # --- beds ------------------------------------------------------------------------------------

@@ -27,7 +27,7 @@ from asset_pipeline.procedural.kit import (
     square_legs,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.roles import fronts as tag_fronts
 from asset_pipeline.procedural.roles import tagged
@@ -38,14 +38,14 @@ def _cabinet(
     size: Vec3,
     rng: Rng,
     *,
-    body: Material,
-    top: Material,
+    body: RecipeMaterial,
+    top: RecipeMaterial,
     top_t: float,
     base: str,
     fronts: list[tuple[tuple[float, float], int, int, str]],
-    handle: Material,
+    handle: RecipeMaterial,
     overhang: float = 0.0,
-    front_mat: Material | None = None,
+    front_mat: RecipeMaterial | None = None,
 ) -> list[Part]:
     """A carcass with a top board (a surface), a base and rows of fronts facing +X.
 

@@ -37,15 +37,15 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe
 
 CEILING = ("ceiling",)
-CRYSTAL = Material("crystal", (0.90, 0.94, 0.98, 0.7), 1.0, 1.0, "crystal")
+CRYSTAL = RecipeMaterial("crystal", (0.90, 0.94, 0.98, 0.7), 1.0, 1.0, "crystal")
 
 
-def ceiling_canopy(h: float, radius: float, material: Material, t: float = 0.025) -> Cylinder:
+def ceiling_canopy(h: float, radius: float, material: RecipeMaterial, t: float = 0.025) -> Cylinder:
     """The ceiling canopy (rose) of a hanging light: a disc whose top is the box's top."""
     return Cylinder((0.0, 0.0, h - 0.5 * t), radius, 0.5 * t, material)
 

@@ -36,14 +36,14 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Box, Material, Part, Vec3
+from asset_pipeline.procedural.parts import Box, Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe, Sphere
 
 
 # --- framed pictures, lamps, plants and rugs ------------------------------------------------------
-def _framed(size: Vec3, rng: Rng, face: Material) -> tuple[list[Part], str]:
+def _framed(size: Vec3, rng: Rng, face: RecipeMaterial) -> tuple[list[Part], str]:
     d, w, h = size
     hw = 0.5 * w
     frame = pick(rng, (GILT, BLACK_METAL, *WOODS[:2], WHITE_LACQUER))

@@ -36,11 +36,11 @@ from asset_pipeline.procedural.kit import (
     square_legs,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe
 
-SEAGRASS = Material("seagrass", (0.62, 0.60, 0.42, 1.0), 0.05, 0.1, "woven seagrass")
+SEAGRASS = RecipeMaterial("seagrass", (0.62, 0.60, 0.42, 1.0), 0.05, 0.1, "woven seagrass")
 
 
 # === laundry, kitchen appliances and utility ==================================================

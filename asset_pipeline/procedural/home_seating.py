@@ -30,12 +30,12 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.storage import DARK_STONE, STONE
 
-SANDSTONE = Material("sandstone", (0.80, 0.70, 0.55, 1.0), 0.1, 0.1, "sandstone")
-SLATE = Material("slate", (0.22, 0.23, 0.25, 1.0), 0.3, 0.3, "slate")
+SANDSTONE = RecipeMaterial("sandstone", (0.80, 0.70, 0.55, 1.0), 0.1, 0.1, "sandstone")
+SLATE = RecipeMaterial("slate", (0.22, 0.23, 0.25, 1.0), 0.3, 0.3, "slate")
 STONES = (BRICK, MARBLE, SANDSTONE, WHITE_LACQUER, CONCRETE)
 
 

@@ -37,11 +37,11 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe
 
-MAHOGANY = Material("mahogany", (0.45, 0.20, 0.12, 1.0), 0.3, 0.4, "mahogany")
+MAHOGANY = RecipeMaterial("mahogany", (0.45, 0.20, 0.12, 1.0), 0.3, 0.4, "mahogany")
 
 
 @category(

@@ -34,18 +34,18 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Box, Material, Part, Vec3
+from asset_pipeline.procedural.parts import Box, Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Cylinder, Lathe
 
 WALL = ("wall",)
-CORK = Material("cork", (0.70, 0.53, 0.35, 1.0), 0.05, 0.1, "cork")
+CORK = RecipeMaterial("cork", (0.70, 0.53, 0.35, 1.0), 0.05, 0.1, "cork")
 CURTAIN_FABRICS = (*FABRICS, LINEN, RUG_RED, CANVAS_WARM)
 
 
 # === wall pieces (back at -X) =================================================================
 def _pleated_panel(
-    y: tuple[float, float], z: tuple[float, float], xc: float, depth: float, fabric: Material
+    y: tuple[float, float], z: tuple[float, float], xc: float, depth: float, fabric: RecipeMaterial
 ) -> list[Part]:
     """A pleated curtain panel ``depth`` deep centred on ``xc``: pleats alternate front and
     back (drawn only) around one collider in the slab they all share."""

@@ -7,83 +7,85 @@ from typing import TypeVar
 
 import numpy as np
 
-from asset_pipeline.procedural.parts import Box, Material, Rect
+from asset_pipeline.procedural.parts import Box, RecipeMaterial, Rect
 from asset_pipeline.procedural.round_parts import Cylinder
 
 # --- palette -------------------------------------------------------------------------------
-OAK = Material("oak", (0.66, 0.49, 0.31, 1.0), 0.2, 0.3)
-WALNUT = Material("walnut", (0.40, 0.27, 0.17, 1.0), 0.2, 0.3)
-PINE = Material("pine", (0.82, 0.68, 0.48, 1.0), 0.15, 0.2)
-ASH = Material("ash", (0.86, 0.78, 0.64, 1.0), 0.15, 0.2, "pale ash")
-WHITE_LACQUER = Material("white_lacquer", (0.92, 0.91, 0.88, 1.0), 0.4, 0.5, "white")
-GREY_LAMINATE = Material("grey_laminate", (0.55, 0.56, 0.57, 1.0), 0.3, 0.3, "grey laminate")
-SAGE_LACQUER = Material("sage_lacquer", (0.56, 0.64, 0.55, 1.0), 0.4, 0.5, "sage green")
-NAVY_LACQUER = Material("navy_lacquer", (0.16, 0.21, 0.32, 1.0), 0.4, 0.5, "navy blue")
-BLACK_METAL = Material("black_metal", (0.08, 0.08, 0.09, 1.0), 0.6, 0.6, "black metal")
-STEEL = Material("steel", (0.72, 0.74, 0.76, 1.0), 0.8, 0.8, "stainless steel")
-CHROME = Material("chrome", (0.85, 0.86, 0.88, 1.0), 0.9, 0.9)
-BRASS = Material("brass", (0.78, 0.62, 0.30, 1.0), 0.8, 0.8)
-GREY_FABRIC = Material("grey_fabric", (0.45, 0.46, 0.48, 1.0), 0.05, 0.1, "grey")
-BLUE_FABRIC = Material("blue_fabric", (0.20, 0.30, 0.48, 1.0), 0.05, 0.1, "blue")
-GREEN_FABRIC = Material("green_fabric", (0.30, 0.42, 0.30, 1.0), 0.05, 0.1, "green")
-BEIGE_FABRIC = Material("beige_fabric", (0.80, 0.74, 0.64, 1.0), 0.05, 0.1, "beige")
-MUSTARD_FABRIC = Material("mustard_fabric", (0.78, 0.58, 0.18, 1.0), 0.05, 0.1, "mustard")
-CHARCOAL_FABRIC = Material("charcoal_fabric", (0.20, 0.20, 0.22, 1.0), 0.05, 0.1, "charcoal")
-RUST_FABRIC = Material("rust_fabric", (0.62, 0.30, 0.18, 1.0), 0.05, 0.1, "rust red")
-LINEN = Material("linen", (0.95, 0.94, 0.91, 1.0), 0.05, 0.1)
-LEATHER = Material("leather", (0.36, 0.22, 0.14, 1.0), 0.3, 0.4, "brown leather")
-BLACK_LEATHER = Material("black_leather", (0.07, 0.07, 0.08, 1.0), 0.4, 0.5, "black leather")
-PORCELAIN = Material("porcelain", (0.97, 0.97, 0.96, 1.0), 0.7, 0.8, "white porcelain")
-CERAMIC_BLUE = Material("ceramic_blue", (0.24, 0.42, 0.62, 1.0), 0.6, 0.7, "blue ceramic")
-CERAMIC_GREEN = Material("ceramic_green", (0.38, 0.55, 0.44, 1.0), 0.6, 0.7, "green ceramic")
-CERAMIC_YELLOW = Material("ceramic_yellow", (0.92, 0.78, 0.32, 1.0), 0.6, 0.7, "yellow ceramic")
-CERAMIC_BLACK = Material("ceramic_black", (0.12, 0.12, 0.13, 1.0), 0.6, 0.7, "black ceramic")
-TERRACOTTA = Material("terracotta", (0.72, 0.38, 0.24, 1.0), 0.1, 0.2)
-CONCRETE = Material("concrete", (0.62, 0.62, 0.60, 1.0), 0.1, 0.1, "grey concrete")
-FOLIAGE = Material("foliage", (0.22, 0.48, 0.20, 1.0), 0.1, 0.2, "green")
-DARK_FOLIAGE = Material("dark_foliage", (0.12, 0.32, 0.14, 1.0), 0.1, 0.2, "dark green")
-BARK = Material("bark", (0.35, 0.25, 0.16, 1.0), 0.05, 0.1)
-SCREEN = Material("screen", (0.03, 0.04, 0.06, 1.0), 0.9, 0.9)
-WHITEBOARD = Material("whiteboard", (0.98, 0.98, 0.98, 1.0), 0.7, 0.8)
-ALUMINIUM = Material("aluminium", (0.78, 0.79, 0.80, 1.0), 0.6, 0.6, "silver")
-SPACE_GREY = Material("space_grey", (0.32, 0.33, 0.35, 1.0), 0.6, 0.6, "space grey")
-BLACK_PLASTIC = Material("black_plastic", (0.06, 0.06, 0.07, 1.0), 0.3, 0.3, "black")
-WHITE_PLASTIC = Material("white_plastic", (0.90, 0.90, 0.90, 1.0), 0.3, 0.3, "white")
-CANVAS = Material("canvas", (0.55, 0.62, 0.70, 1.0), 0.05, 0.1)
-CANVAS_WARM = Material("canvas_warm", (0.80, 0.55, 0.38, 1.0), 0.05, 0.1, "canvas")
-GILT = Material("gilt", (0.76, 0.60, 0.28, 1.0), 0.7, 0.7)
-PAPER = Material("paper", (0.96, 0.95, 0.90, 1.0), 0.05, 0.1)
-RED_COVER = Material("red_cover", (0.62, 0.12, 0.12, 1.0), 0.2, 0.2, "red")
-BLUE_COVER = Material("blue_cover", (0.14, 0.24, 0.50, 1.0), 0.2, 0.2, "blue")
-GREEN_COVER = Material("green_cover", (0.16, 0.40, 0.25, 1.0), 0.2, 0.2, "green")
-BLACK_COVER = Material("black_cover", (0.10, 0.10, 0.11, 1.0), 0.2, 0.2, "black")
-CARDBOARD = Material("cardboard", (0.70, 0.55, 0.38, 1.0), 0.05, 0.1, "brown cardboard")
-TAPE = Material("tape", (0.80, 0.72, 0.55, 1.0), 0.4, 0.4)
-GREEN_GLASS = Material("green_glass", (0.16, 0.38, 0.20, 1.0), 0.9, 0.9, "green glass")
-AMBER_GLASS = Material("amber_glass", (0.55, 0.30, 0.08, 1.0), 0.9, 0.9, "amber glass")
-CLEAR_GLASS = Material("clear_glass", (0.80, 0.88, 0.90, 0.6), 0.9, 0.9, "clear glass")
-APPLE_RED = Material("apple_red", (0.72, 0.10, 0.10, 1.0), 0.5, 0.6, "red")
-APPLE_GREEN = Material("apple_green", (0.55, 0.75, 0.25, 1.0), 0.5, 0.6, "green")
-ORANGE_PEEL = Material("orange_peel", (0.95, 0.55, 0.10, 1.0), 0.3, 0.4, "orange")
-STEM = Material("stem", (0.30, 0.22, 0.10, 1.0), 0.1, 0.1)
-IVORY = Material("ivory", (0.96, 0.94, 0.88, 1.0), 0.5, 0.6)
-PIANO_BLACK = Material("piano_black", (0.03, 0.03, 0.03, 1.0), 0.9, 0.9, "black")
-LAMP_SHADE = Material("lamp_shade", (0.93, 0.89, 0.78, 1.0), 0.05, 0.1, "cream")
-WHITE_SHADE = Material("white_shade", (0.97, 0.97, 0.95, 1.0), 0.05, 0.1, "white")
-TOY_RED = Material("toy_red", (0.85, 0.20, 0.15, 1.0), 0.3, 0.4, "red")
-TOY_BLUE = Material("toy_blue", (0.15, 0.40, 0.85, 1.0), 0.3, 0.4, "blue")
-TOY_YELLOW = Material("toy_yellow", (0.95, 0.80, 0.15, 1.0), 0.3, 0.4, "yellow")
-TOY_GREEN = Material("toy_green", (0.20, 0.70, 0.30, 1.0), 0.3, 0.4, "green")
-SOIL = Material("soil", (0.24, 0.17, 0.11, 1.0), 0.0, 0.0)
-WAX = Material("wax", (0.97, 0.95, 0.88, 1.0), 0.2, 0.3, "ivory wax")
-RED_WAX = Material("red_wax", (0.70, 0.12, 0.14, 1.0), 0.2, 0.3, "red wax")
-WICK = Material("wick", (0.10, 0.09, 0.08, 1.0), 0.0, 0.0)
-RUG_RED = Material("rug_red", (0.58, 0.16, 0.14, 1.0), 0.0, 0.05, "deep red")
-RUG_BLUE = Material("rug_blue", (0.22, 0.30, 0.48, 1.0), 0.0, 0.05, "indigo")
-RUG_BEIGE = Material("rug_beige", (0.82, 0.76, 0.64, 1.0), 0.0, 0.05, "beige")
-RUG_GREY = Material("rug_grey", (0.50, 0.50, 0.50, 1.0), 0.0, 0.05, "grey")
-RUG_BORDER = Material("rug_border", (0.92, 0.88, 0.78, 1.0), 0.0, 0.05, "cream")
-RUG_DARK_BORDER = Material("rug_dark_border", (0.18, 0.14, 0.12, 1.0), 0.0, 0.05, "dark")
+OAK = RecipeMaterial("oak", (0.66, 0.49, 0.31, 1.0), 0.2, 0.3)
+WALNUT = RecipeMaterial("walnut", (0.40, 0.27, 0.17, 1.0), 0.2, 0.3)
+PINE = RecipeMaterial("pine", (0.82, 0.68, 0.48, 1.0), 0.15, 0.2)
+ASH = RecipeMaterial("ash", (0.86, 0.78, 0.64, 1.0), 0.15, 0.2, "pale ash")
+WHITE_LACQUER = RecipeMaterial("white_lacquer", (0.92, 0.91, 0.88, 1.0), 0.4, 0.5, "white")
+GREY_LAMINATE = RecipeMaterial("grey_laminate", (0.55, 0.56, 0.57, 1.0), 0.3, 0.3, "grey laminate")
+SAGE_LACQUER = RecipeMaterial("sage_lacquer", (0.56, 0.64, 0.55, 1.0), 0.4, 0.5, "sage green")
+NAVY_LACQUER = RecipeMaterial("navy_lacquer", (0.16, 0.21, 0.32, 1.0), 0.4, 0.5, "navy blue")
+BLACK_METAL = RecipeMaterial("black_metal", (0.08, 0.08, 0.09, 1.0), 0.6, 0.6, "black metal")
+STEEL = RecipeMaterial("steel", (0.72, 0.74, 0.76, 1.0), 0.8, 0.8, "stainless steel")
+CHROME = RecipeMaterial("chrome", (0.85, 0.86, 0.88, 1.0), 0.9, 0.9)
+BRASS = RecipeMaterial("brass", (0.78, 0.62, 0.30, 1.0), 0.8, 0.8)
+GREY_FABRIC = RecipeMaterial("grey_fabric", (0.45, 0.46, 0.48, 1.0), 0.05, 0.1, "grey")
+BLUE_FABRIC = RecipeMaterial("blue_fabric", (0.20, 0.30, 0.48, 1.0), 0.05, 0.1, "blue")
+GREEN_FABRIC = RecipeMaterial("green_fabric", (0.30, 0.42, 0.30, 1.0), 0.05, 0.1, "green")
+BEIGE_FABRIC = RecipeMaterial("beige_fabric", (0.80, 0.74, 0.64, 1.0), 0.05, 0.1, "beige")
+MUSTARD_FABRIC = RecipeMaterial("mustard_fabric", (0.78, 0.58, 0.18, 1.0), 0.05, 0.1, "mustard")
+CHARCOAL_FABRIC = RecipeMaterial("charcoal_fabric", (0.20, 0.20, 0.22, 1.0), 0.05, 0.1, "charcoal")
+RUST_FABRIC = RecipeMaterial("rust_fabric", (0.62, 0.30, 0.18, 1.0), 0.05, 0.1, "rust red")
+LINEN = RecipeMaterial("linen", (0.95, 0.94, 0.91, 1.0), 0.05, 0.1)
+LEATHER = RecipeMaterial("leather", (0.36, 0.22, 0.14, 1.0), 0.3, 0.4, "brown leather")
+BLACK_LEATHER = RecipeMaterial("black_leather", (0.07, 0.07, 0.08, 1.0), 0.4, 0.5, "black leather")
+PORCELAIN = RecipeMaterial("porcelain", (0.97, 0.97, 0.96, 1.0), 0.7, 0.8, "white porcelain")
+CERAMIC_BLUE = RecipeMaterial("ceramic_blue", (0.24, 0.42, 0.62, 1.0), 0.6, 0.7, "blue ceramic")
+CERAMIC_GREEN = RecipeMaterial("ceramic_green", (0.38, 0.55, 0.44, 1.0), 0.6, 0.7, "green ceramic")
+CERAMIC_YELLOW = RecipeMaterial(
+    "ceramic_yellow", (0.92, 0.78, 0.32, 1.0), 0.6, 0.7, "yellow ceramic"
+)
+CERAMIC_BLACK = RecipeMaterial("ceramic_black", (0.12, 0.12, 0.13, 1.0), 0.6, 0.7, "black ceramic")
+TERRACOTTA = RecipeMaterial("terracotta", (0.72, 0.38, 0.24, 1.0), 0.1, 0.2)
+CONCRETE = RecipeMaterial("concrete", (0.62, 0.62, 0.60, 1.0), 0.1, 0.1, "grey concrete")
+FOLIAGE = RecipeMaterial("foliage", (0.22, 0.48, 0.20, 1.0), 0.1, 0.2, "green")
+DARK_FOLIAGE = RecipeMaterial("dark_foliage", (0.12, 0.32, 0.14, 1.0), 0.1, 0.2, "dark green")
+BARK = RecipeMaterial("bark", (0.35, 0.25, 0.16, 1.0), 0.05, 0.1)
+SCREEN = RecipeMaterial("screen", (0.03, 0.04, 0.06, 1.0), 0.9, 0.9)
+WHITEBOARD = RecipeMaterial("whiteboard", (0.98, 0.98, 0.98, 1.0), 0.7, 0.8)
+ALUMINIUM = RecipeMaterial("aluminium", (0.78, 0.79, 0.80, 1.0), 0.6, 0.6, "silver")
+SPACE_GREY = RecipeMaterial("space_grey", (0.32, 0.33, 0.35, 1.0), 0.6, 0.6, "space grey")
+BLACK_PLASTIC = RecipeMaterial("black_plastic", (0.06, 0.06, 0.07, 1.0), 0.3, 0.3, "black")
+WHITE_PLASTIC = RecipeMaterial("white_plastic", (0.90, 0.90, 0.90, 1.0), 0.3, 0.3, "white")
+CANVAS = RecipeMaterial("canvas", (0.55, 0.62, 0.70, 1.0), 0.05, 0.1)
+CANVAS_WARM = RecipeMaterial("canvas_warm", (0.80, 0.55, 0.38, 1.0), 0.05, 0.1, "canvas")
+GILT = RecipeMaterial("gilt", (0.76, 0.60, 0.28, 1.0), 0.7, 0.7)
+PAPER = RecipeMaterial("paper", (0.96, 0.95, 0.90, 1.0), 0.05, 0.1)
+RED_COVER = RecipeMaterial("red_cover", (0.62, 0.12, 0.12, 1.0), 0.2, 0.2, "red")
+BLUE_COVER = RecipeMaterial("blue_cover", (0.14, 0.24, 0.50, 1.0), 0.2, 0.2, "blue")
+GREEN_COVER = RecipeMaterial("green_cover", (0.16, 0.40, 0.25, 1.0), 0.2, 0.2, "green")
+BLACK_COVER = RecipeMaterial("black_cover", (0.10, 0.10, 0.11, 1.0), 0.2, 0.2, "black")
+CARDBOARD = RecipeMaterial("cardboard", (0.70, 0.55, 0.38, 1.0), 0.05, 0.1, "brown cardboard")
+TAPE = RecipeMaterial("tape", (0.80, 0.72, 0.55, 1.0), 0.4, 0.4)
+GREEN_GLASS = RecipeMaterial("green_glass", (0.16, 0.38, 0.20, 1.0), 0.9, 0.9, "green glass")
+AMBER_GLASS = RecipeMaterial("amber_glass", (0.55, 0.30, 0.08, 1.0), 0.9, 0.9, "amber glass")
+CLEAR_GLASS = RecipeMaterial("clear_glass", (0.80, 0.88, 0.90, 0.6), 0.9, 0.9, "clear glass")
+APPLE_RED = RecipeMaterial("apple_red", (0.72, 0.10, 0.10, 1.0), 0.5, 0.6, "red")
+APPLE_GREEN = RecipeMaterial("apple_green", (0.55, 0.75, 0.25, 1.0), 0.5, 0.6, "green")
+ORANGE_PEEL = RecipeMaterial("orange_peel", (0.95, 0.55, 0.10, 1.0), 0.3, 0.4, "orange")
+STEM = RecipeMaterial("stem", (0.30, 0.22, 0.10, 1.0), 0.1, 0.1)
+IVORY = RecipeMaterial("ivory", (0.96, 0.94, 0.88, 1.0), 0.5, 0.6)
+PIANO_BLACK = RecipeMaterial("piano_black", (0.03, 0.03, 0.03, 1.0), 0.9, 0.9, "black")
+LAMP_SHADE = RecipeMaterial("lamp_shade", (0.93, 0.89, 0.78, 1.0), 0.05, 0.1, "cream")
+WHITE_SHADE = RecipeMaterial("white_shade", (0.97, 0.97, 0.95, 1.0), 0.05, 0.1, "white")
+TOY_RED = RecipeMaterial("toy_red", (0.85, 0.20, 0.15, 1.0), 0.3, 0.4, "red")
+TOY_BLUE = RecipeMaterial("toy_blue", (0.15, 0.40, 0.85, 1.0), 0.3, 0.4, "blue")
+TOY_YELLOW = RecipeMaterial("toy_yellow", (0.95, 0.80, 0.15, 1.0), 0.3, 0.4, "yellow")
+TOY_GREEN = RecipeMaterial("toy_green", (0.20, 0.70, 0.30, 1.0), 0.3, 0.4, "green")
+SOIL = RecipeMaterial("soil", (0.24, 0.17, 0.11, 1.0), 0.0, 0.0)
+WAX = RecipeMaterial("wax", (0.97, 0.95, 0.88, 1.0), 0.2, 0.3, "ivory wax")
+RED_WAX = RecipeMaterial("red_wax", (0.70, 0.12, 0.14, 1.0), 0.2, 0.3, "red wax")
+WICK = RecipeMaterial("wick", (0.10, 0.09, 0.08, 1.0), 0.0, 0.0)
+RUG_RED = RecipeMaterial("rug_red", (0.58, 0.16, 0.14, 1.0), 0.0, 0.05, "deep red")
+RUG_BLUE = RecipeMaterial("rug_blue", (0.22, 0.30, 0.48, 1.0), 0.0, 0.05, "indigo")
+RUG_BEIGE = RecipeMaterial("rug_beige", (0.82, 0.76, 0.64, 1.0), 0.0, 0.05, "beige")
+RUG_GREY = RecipeMaterial("rug_grey", (0.50, 0.50, 0.50, 1.0), 0.0, 0.05, "grey")
+RUG_BORDER = RecipeMaterial("rug_border", (0.92, 0.88, 0.78, 1.0), 0.0, 0.05, "cream")
+RUG_DARK_BORDER = RecipeMaterial("rug_dark_border", (0.18, 0.14, 0.12, 1.0), 0.0, 0.05, "dark")
 
 WOODS = (OAK, WALNUT, PINE, ASH)
 PAINTED = (WHITE_LACQUER, SAGE_LACQUER, NAVY_LACQUER, GREY_LAMINATE)
@@ -153,7 +155,7 @@ def block(
     x: Span,
     y: Span,
     z: Span,
-    material: Material,
+    material: RecipeMaterial,
     *,
     surface: bool | Rect = False,
     collide: bool = True,
@@ -171,7 +173,12 @@ def block(
 
 
 def square_legs(
-    depth: float, width: float, height: float, side: float, material: Material, inset: float = 0.0
+    depth: float,
+    width: float,
+    height: float,
+    side: float,
+    material: RecipeMaterial,
+    inset: float = 0.0,
 ) -> list[Box]:
     """Four square legs of ``side`` under a ``depth`` x ``width`` footprint centred on 0."""
     xs = (-0.5 * depth + inset, 0.5 * depth - inset - side)
@@ -180,7 +187,7 @@ def square_legs(
 
 
 def round_legs(
-    depth: float, width: float, height: float, radius: float, material: Material, inset: float
+    depth: float, width: float, height: float, radius: float, material: RecipeMaterial, inset: float
 ) -> list[Cylinder]:
     """Four upright round legs whose centres sit ``inset`` inside the footprint's corners."""
     xs = (-0.5 * depth + inset, 0.5 * depth - inset)
@@ -198,8 +205,8 @@ def drawer_fronts(
     z: tuple[float, float],
     rows: int,
     columns: int,
-    front: Material,
-    handle: Material,
+    front: RecipeMaterial,
+    handle: RecipeMaterial,
     gap: float = 0.006,
     style: str = "bar",
 ) -> list[Box]:

@@ -39,18 +39,18 @@ from asset_pipeline.procedural.leisure_kit import (
     rod,
     tilted,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Sphere
 
 # --- local palette ---------------------------------------------------------------------------
-FELT_GREEN = Material("felt_green", (0.10, 0.42, 0.22, 1.0), 0.02, 0.05, "green")
-FELT_BLUE = Material("felt_blue", (0.12, 0.28, 0.55, 1.0), 0.02, 0.05, "blue")
-FELT_RED = Material("felt_red", (0.50, 0.10, 0.14, 1.0), 0.02, 0.05, "wine red")
-TT_BLUE = Material("tt_blue", (0.10, 0.22, 0.45, 1.0), 0.2, 0.3, "blue")
-TT_GREEN = Material("tt_green", (0.08, 0.33, 0.22, 1.0), 0.2, 0.3, "green")
-LINE_WHITE = Material("line_white", (0.97, 0.97, 0.97, 1.0), 0.2, 0.3, "white")
-NET_MESH = Material("net_mesh", (0.15, 0.15, 0.16, 0.85), 0.1, 0.1, "black")
+FELT_GREEN = RecipeMaterial("felt_green", (0.10, 0.42, 0.22, 1.0), 0.02, 0.05, "green")
+FELT_BLUE = RecipeMaterial("felt_blue", (0.12, 0.28, 0.55, 1.0), 0.02, 0.05, "blue")
+FELT_RED = RecipeMaterial("felt_red", (0.50, 0.10, 0.14, 1.0), 0.02, 0.05, "wine red")
+TT_BLUE = RecipeMaterial("tt_blue", (0.10, 0.22, 0.45, 1.0), 0.2, 0.3, "blue")
+TT_GREEN = RecipeMaterial("tt_green", (0.08, 0.33, 0.22, 1.0), 0.2, 0.3, "green")
+LINE_WHITE = RecipeMaterial("line_white", (0.97, 0.97, 0.97, 1.0), 0.2, 0.3, "white")
+NET_MESH = RecipeMaterial("net_mesh", (0.15, 0.15, 0.16, 0.85), 0.1, 0.1, "black")
 
 
 # --- game tables -----------------------------------------------------------------------------

@@ -37,11 +37,11 @@ from asset_pipeline.procedural.leisure_kit import (
     rod,
     tilted,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe
 
-POPCORN = Material("popcorn", (0.98, 0.90, 0.62, 1.0), 0.1, 0.1)
+POPCORN = RecipeMaterial("popcorn", (0.98, 0.90, 0.62, 1.0), 0.1, 0.1)
 
 
 # --- salon and hospitality -------------------------------------------------------------------
@@ -145,7 +145,10 @@ def shampoo_station(size: Vec3, rng: Rng) -> Design:
     hd, hw = 0.5 * d, 0.5 * w
     basin = pick(
         rng,
-        (PORCELAIN, Material("basin_black", (0.08, 0.08, 0.09, 1.0), 0.8, 0.8, "black ceramic")),
+        (
+            PORCELAIN,
+            RecipeMaterial("basin_black", (0.08, 0.08, 0.09, 1.0), 0.8, 0.8, "black ceramic"),
+        ),
     )
     cover = pick(rng, UPHOLSTERY)
     cab = pick(rng, (PIANO_BLACK, WHITE_LACQUER, WALNUT))

@@ -21,30 +21,30 @@ from asset_pipeline.procedural.kit import (
 from asset_pipeline.procedural.parts import (
     Axis,
     Collider,
-    Material,
     Mesh,
     Part,
-    Surface,
+    RecipeMaterial,
+    RecipeSurface,
     Vec3,
     add3,
 )
 from asset_pipeline.procedural.round_parts import Cylinder
 
-RUBBER = Material("rubber", (0.05, 0.05, 0.05, 1.0), 0.1, 0.1, "black rubber")
-RED_PAINT = Material("red_paint", (0.72, 0.10, 0.10, 1.0), 0.5, 0.5, "red")
-YELLOW_PAINT = Material("yellow_paint", (0.92, 0.74, 0.12, 1.0), 0.5, 0.5, "yellow")
-BLUE_PAINT = Material("blue_paint", (0.12, 0.30, 0.62, 1.0), 0.5, 0.5, "blue")
-GREEN_PAINT = Material("green_paint", (0.16, 0.45, 0.28, 1.0), 0.5, 0.5, "green")
-LIT_SCREEN = Material("lit_screen", (0.25, 0.55, 0.95, 1.0), 0.9, 0.9, "glowing")
-MARQUEE = Material("marquee", (0.98, 0.80, 0.30, 1.0), 0.9, 0.9, "lit")
-SISAL = Material("sisal", (0.90, 0.84, 0.66, 1.0), 0.05, 0.1, "sisal")
-CHALK_BLACK = Material("chalk_black", (0.10, 0.11, 0.10, 1.0), 0.05, 0.1, "black chalkboard")
-CHALK_WHITE = Material("chalk_white", (0.93, 0.93, 0.90, 1.0), 0.05, 0.1, "chalk")
+RUBBER = RecipeMaterial("rubber", (0.05, 0.05, 0.05, 1.0), 0.1, 0.1, "black rubber")
+RED_PAINT = RecipeMaterial("red_paint", (0.72, 0.10, 0.10, 1.0), 0.5, 0.5, "red")
+YELLOW_PAINT = RecipeMaterial("yellow_paint", (0.92, 0.74, 0.12, 1.0), 0.5, 0.5, "yellow")
+BLUE_PAINT = RecipeMaterial("blue_paint", (0.12, 0.30, 0.62, 1.0), 0.5, 0.5, "blue")
+GREEN_PAINT = RecipeMaterial("green_paint", (0.16, 0.45, 0.28, 1.0), 0.5, 0.5, "green")
+LIT_SCREEN = RecipeMaterial("lit_screen", (0.25, 0.55, 0.95, 1.0), 0.9, 0.9, "glowing")
+MARQUEE = RecipeMaterial("marquee", (0.98, 0.80, 0.30, 1.0), 0.9, 0.9, "lit")
+SISAL = RecipeMaterial("sisal", (0.90, 0.84, 0.66, 1.0), 0.05, 0.1, "sisal")
+CHALK_BLACK = RecipeMaterial("chalk_black", (0.10, 0.11, 0.10, 1.0), 0.05, 0.1, "black chalkboard")
+CHALK_WHITE = RecipeMaterial("chalk_white", (0.93, 0.93, 0.90, 1.0), 0.05, 0.1, "chalk")
 UPHOLSTERY = (
     BLACK_LEATHER,
     LEATHER,
     *FABRICS[4:6],
-    Material("red_vinyl", (0.60, 0.08, 0.10, 1.0), 0.4, 0.5, "red vinyl"),
+    RecipeMaterial("red_vinyl", (0.60, 0.08, 0.10, 1.0), 0.4, 0.5, "red vinyl"),
 )
 NUMBER_WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven"}
 
@@ -73,7 +73,7 @@ class Slab:
 
     center: Vec3
     axes: tuple[Vec3, Vec3, Vec3]
-    material: Material
+    material: RecipeMaterial
     slices: int = 8
     along: int = 2
     collide: bool = True
@@ -120,14 +120,14 @@ class Slab:
             float(hi[2]),
         )
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         return []
 
     def translated(self, offset: Vec3) -> Slab:
         return replace(self, center=add3(self.center, offset))
 
 
-def strut(foot: Vec3, top: Vec3, side: float, material: Material, slices: int = 10) -> Slab:
+def strut(foot: Vec3, top: Vec3, side: float, material: RecipeMaterial, slices: int = 10) -> Slab:
     """A slanted leg of square ``side`` cross-section from ``foot`` up to ``top``."""
     cx, cy, cz = (0.5 * (a + b) for a, b in zip(foot, top))
     ax, ay, az = (0.5 * (b - a) for a, b in zip(foot, top))
@@ -136,7 +136,7 @@ def strut(foot: Vec3, top: Vec3, side: float, material: Material, slices: int = 
 
 
 def tilted(
-    center: Vec3, length: float, width: float, thick: float, angle: float, material: Material
+    center: Vec3, length: float, width: float, thick: float, angle: float, material: RecipeMaterial
 ) -> Slab:
     """A board ``length`` along X tilted by ``angle`` (radians; +X end up), ``width`` in Y."""
     ca, sa = np.cos(angle), np.sin(angle)
@@ -154,13 +154,22 @@ def tilted_bounds(length: float, thick: float, angle: float) -> tuple[float, flo
     return 0.5 * (length * ca + thick * sa), 0.5 * (length * sa + thick * ca)
 
 
-def cyl(x: float, y: float, z0: float, z1: float, r: float, material: Material, **kw) -> Cylinder:
+def cyl(
+    x: float, y: float, z0: float, z1: float, r: float, material: RecipeMaterial, **kw
+) -> Cylinder:
     """An upright cylinder from ``z0`` to ``z1``."""
     return Cylinder((x, y, 0.5 * (z0 + z1)), r, 0.5 * (z1 - z0), material, **kw)
 
 
 def rod(
-    axis: Axis, a0: float, a1: float, p: float, q: float, r: float, material: Material, **kw: Any
+    axis: Axis,
+    a0: float,
+    a1: float,
+    p: float,
+    q: float,
+    r: float,
+    material: RecipeMaterial,
+    **kw: Any,
 ) -> Cylinder:
     """A horizontal cylinder along ``axis`` ('x' or 'y') from ``a0`` to ``a1``; (p, q) are the
     other horizontal coordinate and z."""
@@ -170,7 +179,11 @@ def rod(
 
 
 def frame_rect(
-    x: tuple[float, float], y: tuple[float, float], z: tuple[float, float], t: float, m: Material
+    x: tuple[float, float],
+    y: tuple[float, float],
+    z: tuple[float, float],
+    t: float,
+    m: RecipeMaterial,
 ) -> list[Part]:
     """Four bars outlining the rectangle ``y`` x ``z`` in the plane slab ``x`` (a door frame)."""
     (y0, y1), (z0, z1) = y, z

@@ -35,24 +35,24 @@ from asset_pipeline.procedural.leisure_kit import (
     rod,
     strut,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 
-GRILLE = Material("grille_cloth", (0.12, 0.12, 0.13, 1.0), 0.05, 0.1, "black grille")
-TOLEX = Material("tolex", (0.09, 0.09, 0.09, 1.0), 0.3, 0.3, "black tolex")
-CREAM_TOLEX = Material("cream_tolex", (0.88, 0.82, 0.68, 1.0), 0.3, 0.3, "cream tolex")
+GRILLE = RecipeMaterial("grille_cloth", (0.12, 0.12, 0.13, 1.0), 0.05, 0.1, "black grille")
+TOLEX = RecipeMaterial("tolex", (0.09, 0.09, 0.09, 1.0), 0.3, 0.3, "black tolex")
+CREAM_TOLEX = RecipeMaterial("cream_tolex", (0.88, 0.82, 0.68, 1.0), 0.3, 0.3, "cream tolex")
 DRUM_WRAPS = (
-    Material("drum_red", (0.62, 0.08, 0.10, 1.0), 0.8, 0.8, "red sparkle"),
-    Material("drum_blue", (0.10, 0.22, 0.55, 1.0), 0.8, 0.8, "blue"),
-    Material("drum_black", (0.05, 0.05, 0.06, 1.0), 0.8, 0.8, "black"),
-    Material("drum_white", (0.92, 0.92, 0.90, 1.0), 0.8, 0.8, "white pearl"),
+    RecipeMaterial("drum_red", (0.62, 0.08, 0.10, 1.0), 0.8, 0.8, "red sparkle"),
+    RecipeMaterial("drum_blue", (0.10, 0.22, 0.55, 1.0), 0.8, 0.8, "blue"),
+    RecipeMaterial("drum_black", (0.05, 0.05, 0.06, 1.0), 0.8, 0.8, "black"),
+    RecipeMaterial("drum_white", (0.92, 0.92, 0.90, 1.0), 0.8, 0.8, "white pearl"),
 )
-DRUM_HEAD = Material("drum_head", (0.93, 0.92, 0.86, 1.0), 0.2, 0.2)
-CYMBAL = Material("cymbal", (0.80, 0.64, 0.28, 1.0), 0.9, 0.9, "bronze")
+DRUM_HEAD = RecipeMaterial("drum_head", (0.93, 0.92, 0.86, 1.0), 0.2, 0.2)
+CYMBAL = RecipeMaterial("cymbal", (0.80, 0.64, 0.28, 1.0), 0.9, 0.9, "bronze")
 
 
 # --- music -----------------------------------------------------------------------------------
-def _stand(x: float, y: float, z_top: float, base_r: float, metal: Material) -> list[Part]:
+def _stand(x: float, y: float, z_top: float, base_r: float, metal: RecipeMaterial) -> list[Part]:
     """A drum or cymbal stand: a flat round foot and a thin post up to ``z_top``."""
     return [cyl(x, y, 0.0, 0.02, base_r, metal), cyl(x, y, 0.02, z_top, 0.012, metal)]
 
@@ -281,7 +281,7 @@ def easel(size: Vec3, rng: Rng) -> Design:
         (
             LINEN,
             WHITE_LACQUER,
-            Material("canvas_blue", (0.45, 0.6, 0.78, 1.0), 0.05, 0.1, "half-painted"),
+            RecipeMaterial("canvas_blue", (0.45, 0.6, 0.78, 1.0), 0.05, 0.1, "half-painted"),
         ),
     )
     s = 0.035

@@ -32,15 +32,15 @@ from asset_pipeline.procedural.leisure_kit import (
     frame_rect,
     rod,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 
-GLOW_PINK = Material("glow_pink", (1.00, 0.30, 0.70, 1.0), 1.0, 1.0, "pink")
-GLOW_BLUE = Material("glow_blue", (0.30, 0.75, 1.00, 1.0), 1.0, 1.0, "blue")
-GLOW_GREEN = Material("glow_green", (0.40, 1.00, 0.45, 1.0), 1.0, 1.0, "green")
-GLOW_ORANGE = Material("glow_orange", (1.00, 0.55, 0.15, 1.0), 1.0, 1.0, "orange")
-ACRYLIC = Material("acrylic", (0.90, 0.92, 0.94, 0.35), 0.9, 0.9, "clear acrylic")
-CORK = Material("cork", (0.70, 0.52, 0.34, 1.0), 0.05, 0.1, "cork")
+GLOW_PINK = RecipeMaterial("glow_pink", (1.00, 0.30, 0.70, 1.0), 1.0, 1.0, "pink")
+GLOW_BLUE = RecipeMaterial("glow_blue", (0.30, 0.75, 1.00, 1.0), 1.0, 1.0, "blue")
+GLOW_GREEN = RecipeMaterial("glow_green", (0.40, 1.00, 0.45, 1.0), 1.0, 1.0, "green")
+GLOW_ORANGE = RecipeMaterial("glow_orange", (1.00, 0.55, 0.15, 1.0), 1.0, 1.0, "orange")
+ACRYLIC = RecipeMaterial("acrylic", (0.90, 0.92, 0.94, 0.35), 0.9, 0.9, "clear acrylic")
+CORK = RecipeMaterial("cork", (0.70, 0.52, 0.34, 1.0), 0.05, 0.1, "cork")
 NEONS = (GLOW_PINK, GLOW_BLUE, GLOW_GREEN, GLOW_ORANGE)
 
 
@@ -100,7 +100,7 @@ def _letter(
     z0: float,
     lh: float,
     t: float,
-    mat: Material,
+    mat: RecipeMaterial,
 ) -> list[Part]:
     """The strokes of a seven-segment letter in the plane slab ``x``."""
     zm, z1 = z0 + 0.5 * lh, z0 + lh
@@ -176,7 +176,10 @@ def menu_board(size: Vec3, rng: Rng) -> Design:
         (
             (CHALK_BLACK, CHALK_WHITE),
             (WHITE_PLASTIC, BLACK_PLASTIC),
-            (Material("menu_green", (0.14, 0.26, 0.2, 1.0), 0.05, 0.1, "dark green"), CHALK_WHITE),
+            (
+                RecipeMaterial("menu_green", (0.14, 0.26, 0.2, 1.0), 0.05, 0.1, "dark green"),
+                CHALK_WHITE,
+            ),
         ),
     )
     frame = pick(rng, (*WOODS[:2], BLACK_METAL, ALUMINIUM))

@@ -34,7 +34,7 @@ _BOX_FACES = np.array(
 
 
 @dataclass(frozen=True)
-class Material:
+class RecipeMaterial:
     """A named colour; every material becomes one visual mesh file of the asset.
 
     ``pattern`` chooses the procedural texture the colour tints (see
@@ -139,16 +139,16 @@ def hull_volume(points: np.ndarray) -> float:
 
 
 @dataclass(frozen=True)
-class Surface:
+class RecipeSurface:
     """An upward support surface: its height and its (already eroded) polygon."""
 
     height: float
     polygon: tuple[tuple[float, float], ...]
 
-    def translated(self, offset: Vec3) -> Surface:
+    def translated(self, offset: Vec3) -> RecipeSurface:
         """This surface moved by ``offset``."""
         dx, dy, dz = offset
-        return Surface(self.height + dz, tuple((x + dx, y + dy) for x, y in self.polygon))
+        return RecipeSurface(self.height + dz, tuple((x + dx, y + dy) for x, y in self.polygon))
 
 
 class Part(Protocol):
@@ -158,7 +158,7 @@ class Part(Protocol):
     __dataclass_fields__: ClassVar[dict[str, Any]]
 
     @property
-    def material(self) -> Material:
+    def material(self) -> RecipeMaterial:
         """The part's material."""
 
     def mesh(self) -> Mesh | None:
@@ -170,7 +170,7 @@ class Part(Protocol):
     def bounds(self) -> tuple[Vec3, Vec3] | None:
         """Low and high corners of the visual mesh, or None for a collider-only part."""
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         """Support surfaces on the part's top."""
 
     def translated(self, offset: Vec3) -> Part:
@@ -187,7 +187,7 @@ class Box:
 
     center: Vec3
     half: Vec3
-    material: Material
+    material: RecipeMaterial
     visual: bool = True
     collide: bool = True
     surface: bool | Rect = False
@@ -211,7 +211,7 @@ class Box:
             return None
         return sub3(self.center, self.half), add3(self.center, self.half)
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         if self.surface is False:
             return []
         (cx, cy, cz), (hx, hy, hz) = self.center, self.half
@@ -232,7 +232,7 @@ class Box:
         )
         if x1 <= x0 or y1 <= y0:
             raise ValueError(f"support surface of {self} vanishes after erosion")
-        return [Surface(cz + hz, ((x0, y0), (x1, y0), (x1, y1), (x0, y1)))]
+        return [RecipeSurface(cz + hz, ((x0, y0), (x1, y0), (x1, y1), (x0, y1)))]
 
     def translated(self, offset: Vec3) -> Box:
         return replace(self, center=add3(self.center, offset))

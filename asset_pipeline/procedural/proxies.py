@@ -37,7 +37,7 @@ from asset_pipeline.procedural.assembly import AssetDesign, assemble
 from asset_pipeline.procedural.attributes import Attributes
 from asset_pipeline.procedural.finishes import finished, styled
 from asset_pipeline.procedural.kit import block, square_legs
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.round_parts import Cylinder, Sphere
 
 FAMILIES = (
@@ -51,8 +51,8 @@ FAMILIES = (
     "sphere",
     "stacked",
 )
-PROXY = Material("proxy", (0.60, 0.64, 0.70, 1.0), 0.2, 0.2, "grey-blue")
-PROXY_TRIM = Material("proxy_trim", (0.30, 0.32, 0.36, 1.0), 0.3, 0.3, "dark grey")
+PROXY = RecipeMaterial("proxy", (0.60, 0.64, 0.70, 1.0), 0.2, 0.2, "grey-blue")
+PROXY_TRIM = RecipeMaterial("proxy_trim", (0.30, 0.32, 0.36, 1.0), 0.3, 0.3, "dark grey")
 # kg/m^3 of collider volume: per placement (hollow machines and cabinets are mostly air), and
 # per family for the solid ones (a bench top, a column, a panel).
 DENSITY = {"floor": 60.0, "wall": 300.0, "ceiling": 100.0, "object": 400.0}
@@ -130,7 +130,7 @@ def proxy_size(family: str, size: Vec3) -> Vec3:
 SPHERE_HEIGHT = 1.0 - 0.5 * 0.15  # a sphere is cut flat 15 % of its radius up, to stand still
 
 
-def _parts(family: str, size: Vec3, main: Material, trim: Material) -> list[Part]:
+def _parts(family: str, size: Vec3, main: RecipeMaterial, trim: RecipeMaterial) -> list[Part]:
     x, y, z = size
     hx, hy = 0.5 * x, 0.5 * y
     top = min(x, y) > 0.1  # room for an eroded support surface

@@ -17,7 +17,14 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-from asset_pipeline.procedural.parts import Collider, Material, Mesh, Part, Surface, Vec3
+from asset_pipeline.procedural.parts import (
+    Collider,
+    Mesh,
+    Part,
+    RecipeMaterial,
+    RecipeSurface,
+    Vec3,
+)
 
 ROLES = (
     "top",
@@ -53,7 +60,7 @@ class Tagged:
             raise ValueError(f"unknown part role {self.role!r} (known: {', '.join(ROLES)})")
 
     @property
-    def material(self) -> Material:
+    def material(self) -> RecipeMaterial:
         """The wrapped part's material."""
         return self.part.material
 
@@ -69,7 +76,7 @@ class Tagged:
         """The wrapped part's bounds."""
         return self.part.bounds()
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         """The wrapped part's support surfaces."""
         return self.part.surfaces()
 
@@ -112,7 +119,7 @@ def untagged(part: Part) -> Part:
     return part
 
 
-def with_material(part: Part, material: Material) -> Part:
+def with_material(part: Part, material: RecipeMaterial) -> Part:
     """``part`` made of ``material`` (its role kept)."""
     if isinstance(part, Tagged):
         return Tagged(with_material(part.part, material), part.role)

@@ -20,9 +20,9 @@ from asset_pipeline.procedural.parts import (
     EDGE_MARGIN,
     Axis,
     Collider,
-    Material,
     Mesh,
-    Surface,
+    RecipeMaterial,
+    RecipeSurface,
     Vec3,
     add3,
     axis_extents,
@@ -70,7 +70,7 @@ class Lathe:
 
     base: Vec3
     outer: tuple[tuple[float, float], ...]
-    material: Material
+    material: RecipeMaterial
     hollow: tuple[float, float] | None = None
     visual: bool = True
     collide: bool = True
@@ -117,12 +117,12 @@ class Lathe:
         low = (bx - r, by - r, bz + self.outer[0][1])
         return low, (bx + r, by + r, bz + self.outer[-1][1])
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         if not self.surface:
             return []
         r_top, z_top = self.outer[-1]
         radius = r_top * INSCRIBED - EDGE_MARGIN
-        return [Surface(self.base[2] + z_top, circle(self.base[0], self.base[1], radius))]
+        return [RecipeSurface(self.base[2] + z_top, circle(self.base[0], self.base[1], radius))]
 
     def translated(self, offset: Vec3) -> Lathe:
         return replace(self, base=add3(self.base, offset))
@@ -135,7 +135,7 @@ class Cylinder:
     center: Vec3
     radius: float
     half_length: float
-    material: Material
+    material: RecipeMaterial
     axis: Axis = "z"
     visual: bool = True
     collide: bool = True
@@ -169,14 +169,14 @@ class Cylinder:
         ext = axis_extents(self.radius, self.half_length, self.axis)
         return sub3(self.center, ext), add3(self.center, ext)
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         if not self.surface:
             return []
         if self.axis != "z":
             raise ValueError("only an upright cylinder has a flat top")
         radius = self.radius * INSCRIBED - EDGE_MARGIN
         cx, cy, cz = self.center
-        return [Surface(cz + self.half_length, circle(cx, cy, radius))]
+        return [RecipeSurface(cz + self.half_length, circle(cx, cy, radius))]
 
     def translated(self, offset: Vec3) -> Cylinder:
         return replace(self, center=add3(self.center, offset))
@@ -194,7 +194,7 @@ class Sphere:
 
     center: Vec3
     radius: float
-    material: Material
+    material: RecipeMaterial
     cut: float | None = None
     rings: int = 10
     visual: bool = True
@@ -256,7 +256,7 @@ class Sphere:
             low = (low[0], low[1], self.cut)
         return low, add3(self.center, (r, r, r))
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         return []
 
     def translated(self, offset: Vec3) -> Sphere:

@@ -26,10 +26,10 @@ from asset_pipeline.procedural.parts import (
     EDGE_MARGIN,
     Box,
     Collider,
-    Material,
     Mesh,
     Part,
-    Surface,
+    RecipeMaterial,
+    RecipeSurface,
     Vec3,
     add3,
 )
@@ -62,7 +62,7 @@ class EllipticSlab:
     a: float
     b: float
     half_height: float
-    material: Material
+    material: RecipeMaterial
     surface: bool = False
 
     def mesh(self) -> Mesh | None:
@@ -91,7 +91,7 @@ class EllipticSlab:
         h = self.half_height
         return (cx - self.a, cy - self.b, cz - h), (cx + self.a, cy + self.b, cz + h)
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         if not self.surface:
             return []
 
@@ -105,7 +105,7 @@ class EllipticSlab:
             )
             for k in range(SEGMENTS)
         )
-        return [Surface(cz + self.half_height, polygon)]
+        return [RecipeSurface(cz + self.half_height, polygon)]
 
     def translated(self, offset: Vec3) -> EllipticSlab:
         return replace(self, center=add3(self.center, offset))

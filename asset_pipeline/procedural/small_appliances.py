@@ -22,7 +22,7 @@ from asset_pipeline.procedural.kit import (
     clamp,
     pick,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe
 from asset_pipeline.procedural.small_kit import (
@@ -40,7 +40,12 @@ from asset_pipeline.procedural.small_kit import (
 
 
 def loop_handle(
-    x: tuple[float, float], r: float, reach: float, z: tuple[float, float], t: float, m: Material
+    x: tuple[float, float],
+    r: float,
+    reach: float,
+    z: tuple[float, float],
+    t: float,
+    m: RecipeMaterial,
 ) -> list[Part]:
     """A mug-like handle on +Y of a round body of radius ``r``, reaching ``reach`` beyond it."""
     y0, y1 = 0.75 * r, r + reach

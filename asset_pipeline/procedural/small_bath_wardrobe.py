@@ -24,7 +24,7 @@ from asset_pipeline.procedural.kit import (
     clamp,
     pick,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe
 from asset_pipeline.procedural.small_kit import (
@@ -41,13 +41,13 @@ from asset_pipeline.procedural.small_kit import (
     handle_arch,
 )
 
-SOAP = Material("soap", (0.75, 0.86, 0.70, 0.8), 0.8, 0.8)
-NYLON_NAVY = Material("nylon_navy", (0.13, 0.17, 0.30, 1.0), 0.2, 0.2, "navy")
-NYLON_GREEN = Material("nylon_green", (0.24, 0.38, 0.26, 1.0), 0.2, 0.2, "olive green")
-NYLON_GREY = Material("nylon_grey", (0.38, 0.39, 0.41, 1.0), 0.2, 0.2, "grey")
-SUEDE = Material("suede", (0.62, 0.46, 0.30, 1.0), 0.05, 0.1, "tan suede")
-CANVAS_WHITE = Material("canvas_white", (0.93, 0.93, 0.91, 1.0), 0.1, 0.1, "white canvas")
-AMBER_BOTTLE = Material("amber_bottle", (0.55, 0.30, 0.08, 1.0), 0.8, 0.8, "amber glass")
+SOAP = RecipeMaterial("soap", (0.75, 0.86, 0.70, 0.8), 0.8, 0.8)
+NYLON_NAVY = RecipeMaterial("nylon_navy", (0.13, 0.17, 0.30, 1.0), 0.2, 0.2, "navy")
+NYLON_GREEN = RecipeMaterial("nylon_green", (0.24, 0.38, 0.26, 1.0), 0.2, 0.2, "olive green")
+NYLON_GREY = RecipeMaterial("nylon_grey", (0.38, 0.39, 0.41, 1.0), 0.2, 0.2, "grey")
+SUEDE = RecipeMaterial("suede", (0.62, 0.46, 0.30, 1.0), 0.05, 0.1, "tan suede")
+CANVAS_WHITE = RecipeMaterial("canvas_white", (0.93, 0.93, 0.91, 1.0), 0.1, 0.1, "white canvas")
+AMBER_BOTTLE = RecipeMaterial("amber_bottle", (0.55, 0.30, 0.08, 1.0), 0.8, 0.8, "amber glass")
 NYLONS = (NYLON_NAVY, NYLON_RED, NYLON_GREEN, NYLON_GREY)
 
 

@@ -24,7 +24,7 @@ from asset_pipeline.procedural.kit import (
     clamp,
     pick,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe, Sphere
 from asset_pipeline.procedural.small_kit import (
@@ -42,10 +42,10 @@ from asset_pipeline.procedural.small_kit import (
     deco,
 )
 
-OCEAN = Material("ocean", (0.22, 0.44, 0.70, 1.0), 0.4, 0.4, "blue")
-PARCHMENT = Material("parchment", (0.86, 0.76, 0.55, 1.0), 0.3, 0.3, "antique")
-PHOTO = Material("photo", (0.45, 0.58, 0.66, 1.0), 0.6, 0.6)
-MARBLE = Material("marble", (0.90, 0.90, 0.88, 1.0), 0.6, 0.6, "white marble")
+OCEAN = RecipeMaterial("ocean", (0.22, 0.44, 0.70, 1.0), 0.4, 0.4, "blue")
+PARCHMENT = RecipeMaterial("parchment", (0.86, 0.76, 0.55, 1.0), 0.3, 0.3, "antique")
+PHOTO = RecipeMaterial("photo", (0.45, 0.58, 0.66, 1.0), 0.6, 0.6)
+MARBLE = RecipeMaterial("marble", (0.90, 0.90, 0.88, 1.0), 0.6, 0.6, "white marble")
 
 
 @category(

@@ -20,7 +20,7 @@ from asset_pipeline.procedural.kit import (
     clamp,
     pick,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.small_kit import (
     GREY_PLASTIC,
@@ -32,8 +32,8 @@ from asset_pipeline.procedural.small_kit import (
     deco,
 )
 
-VINYL = Material("vinyl", (0.03, 0.03, 0.03, 1.0), 0.8, 0.8)
-LABEL = Material("label", (0.85, 0.25, 0.15, 1.0), 0.3, 0.3)
+VINYL = RecipeMaterial("vinyl", (0.03, 0.03, 0.03, 1.0), 0.8, 0.8)
+LABEL = RecipeMaterial("label", (0.85, 0.25, 0.15, 1.0), 0.3, 0.3)
 
 
 # --- lab and office electronics ------------------------------------------------------------

@@ -25,7 +25,7 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe
 from asset_pipeline.procedural.small_kit import (
@@ -40,19 +40,19 @@ from asset_pipeline.procedural.small_kit import (
     handle_arch,
 )
 
-WICKER = Material("wicker", (0.72, 0.56, 0.34, 1.0), 0.1, 0.1)
-SEAGRASS = Material("seagrass", (0.66, 0.62, 0.44, 1.0), 0.1, 0.1)
-DARK_WICKER = Material("dark_wicker", (0.40, 0.28, 0.17, 1.0), 0.1, 0.1, "dark rattan")
-CRUST = Material("crust", (0.74, 0.50, 0.24, 1.0), 0.1, 0.1, "golden")
-DARK_CRUST = Material("dark_crust", (0.42, 0.27, 0.15, 1.0), 0.1, 0.1, "dark rye")
-ICING = Material("icing", (0.97, 0.95, 0.92, 1.0), 0.3, 0.3, "white icing")
-PINK_ICING = Material("pink_icing", (0.95, 0.68, 0.74, 1.0), 0.3, 0.3, "pink icing")
-CHOCOLATE = Material("chocolate", (0.30, 0.17, 0.10, 1.0), 0.3, 0.3)
-SPONGE = Material("sponge", (0.93, 0.80, 0.55, 1.0), 0.05, 0.05)
-BERRY = Material("berry", (0.65, 0.05, 0.12, 1.0), 0.6, 0.6)
-BEANS = Material("beans", (0.45, 0.25, 0.13, 1.0), 0.3, 0.3, "coffee beans")
-PASTA = Material("pasta", (0.93, 0.80, 0.45, 1.0), 0.2, 0.2, "pasta")
-RICE = Material("rice", (0.95, 0.94, 0.90, 1.0), 0.1, 0.1, "rice")
+WICKER = RecipeMaterial("wicker", (0.72, 0.56, 0.34, 1.0), 0.1, 0.1)
+SEAGRASS = RecipeMaterial("seagrass", (0.66, 0.62, 0.44, 1.0), 0.1, 0.1)
+DARK_WICKER = RecipeMaterial("dark_wicker", (0.40, 0.28, 0.17, 1.0), 0.1, 0.1, "dark rattan")
+CRUST = RecipeMaterial("crust", (0.74, 0.50, 0.24, 1.0), 0.1, 0.1, "golden")
+DARK_CRUST = RecipeMaterial("dark_crust", (0.42, 0.27, 0.15, 1.0), 0.1, 0.1, "dark rye")
+ICING = RecipeMaterial("icing", (0.97, 0.95, 0.92, 1.0), 0.3, 0.3, "white icing")
+PINK_ICING = RecipeMaterial("pink_icing", (0.95, 0.68, 0.74, 1.0), 0.3, 0.3, "pink icing")
+CHOCOLATE = RecipeMaterial("chocolate", (0.30, 0.17, 0.10, 1.0), 0.3, 0.3)
+SPONGE = RecipeMaterial("sponge", (0.93, 0.80, 0.55, 1.0), 0.05, 0.05)
+BERRY = RecipeMaterial("berry", (0.65, 0.05, 0.12, 1.0), 0.6, 0.6)
+BEANS = RecipeMaterial("beans", (0.45, 0.25, 0.13, 1.0), 0.3, 0.3, "coffee beans")
+PASTA = RecipeMaterial("pasta", (0.93, 0.80, 0.45, 1.0), 0.2, 0.2, "pasta")
+RICE = RecipeMaterial("rice", (0.95, 0.94, 0.90, 1.0), 0.1, 0.1, "rice")
 
 
 # --- kitchen utensils and food -------------------------------------------------------------

@@ -16,7 +16,7 @@ from asset_pipeline.procedural.kit import (
     clamp,
     pick,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.small_electronics import (
     LABEL,
@@ -40,7 +40,7 @@ from asset_pipeline.procedural.small_kit import (
 
 
 # --- handheld and home electronics ----------------------------------------------------------------
-def _slab_device(size: Vec3, rng: Rng, finishes: tuple[Material, ...]) -> Design:
+def _slab_device(size: Vec3, rng: Rng, finishes: tuple[RecipeMaterial, ...]) -> Design:
     """A phone or tablet lying screen up: a slab, the screen inset on top."""
     d, w, h = size
     hd, hw = 0.5 * d, 0.5 * w

@@ -22,7 +22,7 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe
 from asset_pipeline.procedural.small_kit import (
@@ -35,11 +35,11 @@ from asset_pipeline.procedural.small_kit import (
     deco,
 )
 
-RED_PEN = Material("red_pen", (0.80, 0.10, 0.10, 1.0), 0.5, 0.5)
-BLUE_PEN = Material("blue_pen", (0.10, 0.20, 0.70, 1.0), 0.5, 0.5)
-PENCIL = Material("pencil", (0.95, 0.75, 0.15, 1.0), 0.3, 0.3)
-BRIGHT_PAPER = Material("bright_paper", (0.99, 0.99, 0.99, 1.0), 0.05, 0.1, "white")
-RECYCLED = Material("recycled_paper", (0.88, 0.85, 0.76, 1.0), 0.05, 0.1, "recycled")
+RED_PEN = RecipeMaterial("red_pen", (0.80, 0.10, 0.10, 1.0), 0.5, 0.5)
+BLUE_PEN = RecipeMaterial("blue_pen", (0.10, 0.20, 0.70, 1.0), 0.5, 0.5)
+PENCIL = RecipeMaterial("pencil", (0.95, 0.75, 0.15, 1.0), 0.3, 0.3)
+BRIGHT_PAPER = RecipeMaterial("bright_paper", (0.99, 0.99, 0.99, 1.0), 0.05, 0.1, "white")
+RECYCLED = RecipeMaterial("recycled_paper", (0.88, 0.85, 0.76, 1.0), 0.05, 0.1, "recycled")
 
 
 # --- desk and office -----------------------------------------------------------------------

@@ -19,7 +19,7 @@ from asset_pipeline.procedural.kit import (
     clamp,
     pick,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Sphere
 from asset_pipeline.procedural.small_kit import (
@@ -37,11 +37,11 @@ from asset_pipeline.procedural.small_kit import (
     deco,
 )
 
-PLUSH_BROWN = Material("plush_brown", (0.50, 0.33, 0.19, 1.0), 0.0, 0.05, "brown")
-PLUSH_HONEY = Material("plush_honey", (0.80, 0.60, 0.34, 1.0), 0.0, 0.05, "honey")
-PLUSH_CREAM = Material("plush_cream", (0.92, 0.87, 0.77, 1.0), 0.0, 0.05, "cream")
-CHESS_DARK = Material("chess_dark", (0.25, 0.16, 0.10, 1.0), 0.4, 0.4)
-CHESS_LIGHT = Material("chess_light", (0.90, 0.82, 0.64, 1.0), 0.4, 0.4)
+PLUSH_BROWN = RecipeMaterial("plush_brown", (0.50, 0.33, 0.19, 1.0), 0.0, 0.05, "brown")
+PLUSH_HONEY = RecipeMaterial("plush_honey", (0.80, 0.60, 0.34, 1.0), 0.0, 0.05, "honey")
+PLUSH_CREAM = RecipeMaterial("plush_cream", (0.92, 0.87, 0.77, 1.0), 0.0, 0.05, "cream")
+CHESS_DARK = RecipeMaterial("chess_dark", (0.25, 0.16, 0.10, 1.0), 0.4, 0.4)
+CHESS_LIGHT = RecipeMaterial("chess_light", (0.90, 0.82, 0.64, 1.0), 0.4, 0.4)
 
 
 # --- games, toys, sport --------------------------------------------------------------------

@@ -21,7 +21,7 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe
 from asset_pipeline.procedural.small_kit import (
@@ -40,17 +40,17 @@ from asset_pipeline.procedural.small_kit import (
     handle_arch,
 )
 
-RED_METAL = Material("red_metal", (0.72, 0.12, 0.10, 1.0), 0.5, 0.5, "red metal")
-GALVANISED = Material("galvanised", (0.66, 0.68, 0.68, 1.0), 0.5, 0.5, "galvanised steel")
-COPPER = Material("copper", (0.72, 0.42, 0.26, 1.0), 0.8, 0.8)
-BLUE_LIQUID = Material("blue_liquid", (0.25, 0.45, 0.85, 0.8), 0.8, 0.8)
-GREEN_LIQUID = Material("green_liquid", (0.30, 0.75, 0.35, 0.8), 0.8, 0.8)
-DRILL_YELLOW = Material("drill_yellow", (0.95, 0.72, 0.10, 1.0), 0.3, 0.3, "yellow")
+RED_METAL = RecipeMaterial("red_metal", (0.72, 0.12, 0.10, 1.0), 0.5, 0.5, "red metal")
+GALVANISED = RecipeMaterial("galvanised", (0.66, 0.68, 0.68, 1.0), 0.5, 0.5, "galvanised steel")
+COPPER = RecipeMaterial("copper", (0.72, 0.42, 0.26, 1.0), 0.8, 0.8)
+BLUE_LIQUID = RecipeMaterial("blue_liquid", (0.25, 0.45, 0.85, 0.8), 0.8, 0.8)
+GREEN_LIQUID = RecipeMaterial("green_liquid", (0.30, 0.75, 0.35, 0.8), 0.8, 0.8)
+DRILL_YELLOW = RecipeMaterial("drill_yellow", (0.95, 0.72, 0.10, 1.0), 0.3, 0.3, "yellow")
 PAINT_COLOURS = (
-    Material("paint_white", (0.95, 0.95, 0.93, 1.0), 0.3, 0.3, "white"),
-    Material("paint_blue", (0.20, 0.38, 0.70, 1.0), 0.3, 0.3, "blue"),
-    Material("paint_yellow", (0.95, 0.78, 0.20, 1.0), 0.3, 0.3, "yellow"),
-    Material("paint_green", (0.30, 0.60, 0.36, 1.0), 0.3, 0.3, "green"),
+    RecipeMaterial("paint_white", (0.95, 0.95, 0.93, 1.0), 0.3, 0.3, "white"),
+    RecipeMaterial("paint_blue", (0.20, 0.38, 0.70, 1.0), 0.3, 0.3, "blue"),
+    RecipeMaterial("paint_yellow", (0.95, 0.78, 0.20, 1.0), 0.3, 0.3, "yellow"),
+    RecipeMaterial("paint_green", (0.30, 0.60, 0.36, 1.0), 0.3, 0.3, "green"),
 )
 
 

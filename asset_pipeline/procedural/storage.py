@@ -24,14 +24,14 @@ from asset_pipeline.procedural.kit import (
     square_legs,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.roles import fronts as tag_fronts
 from asset_pipeline.procedural.roles import tagged
 
 PROUD = FRONT_T + HANDLE_D  # fronts and handles stand this far in front of a carcass
-STONE = Material("stone_top", (0.85, 0.84, 0.80, 1.0), 0.5, 0.6, "pale stone")
-DARK_STONE = Material("dark_stone", (0.20, 0.20, 0.21, 1.0), 0.5, 0.6, "dark stone")
+STONE = RecipeMaterial("stone_top", (0.85, 0.84, 0.80, 1.0), 0.5, 0.6, "pale stone")
+DARK_STONE = RecipeMaterial("dark_stone", (0.20, 0.20, 0.21, 1.0), 0.5, 0.6, "dark stone")
 WORKTOPS = (GREY_LAMINATE, STONE, DARK_STONE, OAK, WALNUT)
 HANDLES = (BLACK_METAL, CHROME, BRASS)
 
@@ -40,13 +40,13 @@ def _case(
     size: Vec3,
     rng: Rng,
     *,
-    body: Material,
-    top: Material,
+    body: RecipeMaterial,
+    top: RecipeMaterial,
     top_t: float,
     overhang: float,
     base: str,
     fronts: list[tuple[tuple[float, float], int, int, str]],
-    handle: Material,
+    handle: RecipeMaterial,
 ) -> list[Part]:
     """A carcass with a top board (a surface) and rows of fronts.
 
@@ -301,7 +301,7 @@ def base_cabinet(size: Vec3, rng: Rng) -> Design:
 
 
 def _wall_unit(
-    size: Vec3, rng: Rng, bodies: tuple[Material, ...]
+    size: Vec3, rng: Rng, bodies: tuple[RecipeMaterial, ...]
 ) -> tuple[list[Part], dict[str, str]]:
     cols = 1 if size[1] < 0.55 else (2 if size[1] < 1.1 else 3)
     body = pick(rng, bodies)

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from asset_pipeline.procedural.parts import Material, Mesh
+from asset_pipeline.procedural.parts import Mesh, RecipeMaterial
 from holomj.mjcf.textures import (
     PATTERNS,
     PLAIN_WORDS,
@@ -41,7 +41,7 @@ __all__ = [
 ]
 
 
-def pattern_of(material: Material) -> str | None:
+def pattern_of(material: RecipeMaterial) -> str | None:
     """The pattern ``material`` wears, or None for a plain colour.
 
     An explicit ``material.pattern`` wins (``"plain"``: none). Otherwise the label decides

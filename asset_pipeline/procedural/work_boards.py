@@ -33,11 +33,13 @@ from asset_pipeline.procedural.leisure_kit import (
     YELLOW_PAINT,
     frame_rect,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 
-PEGBOARD = Material("pegboard", (0.62, 0.47, 0.30, 1.0), 0.1, 0.1, "brown pegboard")
-WHITE_PEGBOARD = Material("white_pegboard", (0.92, 0.92, 0.90, 1.0), 0.1, 0.1, "white pegboard")
+PEGBOARD = RecipeMaterial("pegboard", (0.62, 0.47, 0.30, 1.0), 0.1, 0.1, "brown pegboard")
+WHITE_PEGBOARD = RecipeMaterial(
+    "white_pegboard", (0.92, 0.92, 0.90, 1.0), 0.1, 0.1, "white pegboard"
+)
 
 
 # --- wall boards ------------------------------------------------------------------------------
@@ -57,7 +59,8 @@ def chalkboard(size: Vec3, rng: Rng) -> Design:
     d, w, h = size
     hd, hw = 0.5 * d, 0.5 * w
     board = pick(
-        rng, (CHALK_BLACK, Material("slate_green", (0.16, 0.28, 0.22, 1.0), 0.05, 0.1, "green"))
+        rng,
+        (CHALK_BLACK, RecipeMaterial("slate_green", (0.16, 0.28, 0.22, 1.0), 0.05, 0.1, "green")),
     )
     frame = pick(rng, (OAK, WALNUT, PINE, ALUMINIUM))
     f = clamp(0.04 * min(w, h), 0.02, 0.05)
@@ -138,7 +141,7 @@ def tool_wall(size: Vec3, rng: Rng) -> Design:
         (
             PEGBOARD,
             WHITE_PEGBOARD,
-            Material("peg_grey", (0.35, 0.36, 0.38, 1.0), 0.3, 0.3, "grey steel pegboard"),
+            RecipeMaterial("peg_grey", (0.35, 0.36, 0.38, 1.0), 0.3, 0.3, "grey steel pegboard"),
         ),
     )
     f = 0.03

@@ -29,7 +29,7 @@ from asset_pipeline.procedural.leisure_kit import (
     tilted,
     tilted_bounds,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     LAB_WHITE,
@@ -37,7 +37,7 @@ from asset_pipeline.procedural.work_kit import (
     PUTTY,
 )
 
-MINT = Material("mint_vinyl", (0.55, 0.78, 0.72, 1.0), 0.4, 0.5, "mint green vinyl")
+MINT = RecipeMaterial("mint_vinyl", (0.55, 0.78, 0.72, 1.0), 0.4, 0.5, "mint green vinyl")
 
 
 # --- health -----------------------------------------------------------------------------------
@@ -62,7 +62,7 @@ def hospital_bed(size: Vec3, rng: Rng) -> Design:
         (
             LAB_WHITE,
             OFFICE_GREY,
-            Material("bed_blue", (0.45, 0.60, 0.78, 1.0), 0.4, 0.4, "pale blue"),
+            RecipeMaterial("bed_blue", (0.45, 0.60, 0.78, 1.0), 0.4, 0.4, "pale blue"),
         ),
     )
     board = pick(rng, (frame, OAK, PUTTY))
@@ -113,7 +113,11 @@ def hospital_bed(size: Vec3, rng: Rng) -> Design:
 
 
 def frame_rect_y(
-    x: tuple[float, float], y: tuple[float, float], z: tuple[float, float], t: float, m: Material
+    x: tuple[float, float],
+    y: tuple[float, float],
+    z: tuple[float, float],
+    t: float,
+    m: RecipeMaterial,
 ) -> list[Part]:
     """Four bars outlining the rectangle ``x`` x ``z`` in the plane slab ``y`` (a side rail)."""
     (x0, x1), (z0, z1) = x, z
@@ -147,7 +151,7 @@ def examination_table(size: Vec3, rng: Rng) -> Design:
         (
             MINT,
             BLACK_LEATHER,
-            Material("exam_blue", (0.25, 0.40, 0.60, 1.0), 0.4, 0.5, "blue vinyl"),
+            RecipeMaterial("exam_blue", (0.25, 0.40, 0.60, 1.0), 0.4, 0.5, "blue vinyl"),
             PUTTY,
         ),
     )

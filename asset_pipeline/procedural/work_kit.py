@@ -10,11 +10,11 @@ from asset_pipeline.procedural.kit import (
     CHROME,
     STEEL,
 )
-from asset_pipeline.procedural.parts import Material
+from asset_pipeline.procedural.parts import RecipeMaterial
 
-LAB_WHITE = Material("lab_white", (0.88, 0.89, 0.87, 1.0), 0.4, 0.4, "white")
-OFFICE_GREY = Material("office_grey", (0.62, 0.63, 0.62, 1.0), 0.4, 0.4, "light grey")
-PUTTY = Material("putty", (0.80, 0.78, 0.70, 1.0), 0.4, 0.4, "putty")
+LAB_WHITE = RecipeMaterial("lab_white", (0.88, 0.89, 0.87, 1.0), 0.4, 0.4, "white")
+OFFICE_GREY = RecipeMaterial("office_grey", (0.62, 0.63, 0.62, 1.0), 0.4, 0.4, "light grey")
+PUTTY = RecipeMaterial("putty", (0.80, 0.78, 0.70, 1.0), 0.4, 0.4, "putty")
 METAL_HANDLES = (CHROME, BLACK_METAL, STEEL)
 NUMBER_WORDS = {
     1: "one",

@@ -31,7 +31,7 @@ from asset_pipeline.procedural.leisure_kit import (
     frame_rect,
     rod,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.round_parts import Lathe
 from asset_pipeline.procedural.work_kit import (
@@ -42,9 +42,9 @@ from asset_pipeline.procedural.work_kit import (
     PUTTY,
 )
 
-LED_GREEN = Material("led_green", (0.2, 1.0, 0.3, 1.0), 1.0, 1.0)
-LED_BLUE = Material("led_blue", (0.2, 0.5, 1.0, 1.0), 1.0, 1.0)
-WATER = Material("water_bottle", (0.55, 0.75, 0.95, 0.55), 0.9, 0.9, "blue")
+LED_GREEN = RecipeMaterial("led_green", (0.2, 1.0, 0.3, 1.0), 1.0, 1.0)
+LED_BLUE = RecipeMaterial("led_blue", (0.2, 0.5, 1.0, 1.0), 1.0, 1.0)
+WATER = RecipeMaterial("water_bottle", (0.55, 0.75, 0.95, 0.55), 0.9, 0.9, "blue")
 STEELS = (OFFICE_GREY, PUTTY, BLACK_METAL, BLUE_PAINT, LAB_WHITE)
 
 
@@ -325,7 +325,7 @@ def safe(size: Vec3, rng: Rng) -> Design:
             BLACK_METAL,
             OFFICE_GREY,
             GREEN_PAINT,
-            Material("safe_red", (0.45, 0.08, 0.08, 1.0), 0.6, 0.6, "oxblood"),
+            RecipeMaterial("safe_red", (0.45, 0.08, 0.08, 1.0), 0.6, 0.6, "oxblood"),
         ),
     )
     dial = pick(rng, (BRASS, CHROME))

@@ -35,7 +35,7 @@ from asset_pipeline.procedural.leisure_kit import (
     YELLOW_PAINT,
     rod,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     NUMBER_WORDS,
@@ -47,7 +47,7 @@ GARMENTS = (
     *FABRICS,
     LINEN,
     BLACK_LEATHER,
-    Material("denim", (0.22, 0.32, 0.50, 1.0), 0.05, 0.1, "denim"),
+    RecipeMaterial("denim", (0.22, 0.32, 0.50, 1.0), 0.05, 0.1, "denim"),
 )
 
 
@@ -148,7 +148,7 @@ def shelving_gondola(size: Vec3, rng: Rng) -> Design:
 
 
 def _counter(
-    size: Vec3, rng: Rng, top: Material, body: Material, staff_shelves: bool
+    size: Vec3, rng: Rng, top: RecipeMaterial, body: RecipeMaterial, staff_shelves: bool
 ) -> tuple[list[Part], float]:
     """A counter: top (a surface) overhanging the customer side (+X), a plinth, a front panel
     and, on the staff side (-X), open shelves (surfaces) or a closed back."""
@@ -302,4 +302,4 @@ def display_case(size: Vec3, rng: Rng) -> Design:
     return Design(tuple(parts), {"frame": frame.words, "base": base.words})
 
 
-PIANO_BLACK_LOCAL = Material("gloss_black", (0.04, 0.04, 0.04, 1.0), 0.9, 0.9, "gloss black")
+PIANO_BLACK_LOCAL = RecipeMaterial("gloss_black", (0.04, 0.04, 0.04, 1.0), 0.9, 0.9, "gloss black")

@@ -33,7 +33,7 @@ from asset_pipeline.procedural.leisure_kit import (
     tilted,
     tilted_bounds,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     METAL_HANDLES,
@@ -196,7 +196,7 @@ def drafting_table(size: Vec3, rng: Rng) -> Design:
         rng,
         (
             WHITEBOARD,
-            Material("drafting_green", (0.55, 0.70, 0.55, 1.0), 0.1, 0.1, "green vinyl"),
+            RecipeMaterial("drafting_green", (0.55, 0.70, 0.55, 1.0), 0.1, 0.1, "green vinyl"),
             ASH_LOCAL,
         ),
     )
@@ -234,7 +234,7 @@ def drafting_table(size: Vec3, rng: Rng) -> Design:
     return Design(tuple(parts), words)
 
 
-ASH_LOCAL = Material("maple_board", (0.88, 0.78, 0.60, 1.0), 0.15, 0.2, "maple")
+ASH_LOCAL = RecipeMaterial("maple_board", (0.88, 0.78, 0.60, 1.0), 0.15, 0.2, "maple")
 
 
 @category(

@@ -21,13 +21,13 @@ from asset_pipeline.procedural.leisure_kit import (
     BLUE_PAINT,
     YELLOW_PAINT,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     NUMBER_WORDS,
 )
 
-ORANGE_STEEL = Material("orange_steel", (0.92, 0.42, 0.08, 1.0), 0.5, 0.5, "orange")
+ORANGE_STEEL = RecipeMaterial("orange_steel", (0.92, 0.42, 0.08, 1.0), 0.5, 0.5, "orange")
 
 
 # --- warehouse --------------------------------------------------------------------------------

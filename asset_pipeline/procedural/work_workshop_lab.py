@@ -31,7 +31,7 @@ from asset_pipeline.procedural.leisure_kit import (
     frame_rect,
     rod,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design, category
 from asset_pipeline.procedural.work_kit import (
     LAB_WHITE,
@@ -41,8 +41,8 @@ from asset_pipeline.procedural.work_kit import (
     PUTTY,
 )
 
-RESIN = Material("black_resin", (0.07, 0.07, 0.08, 1.0), 0.5, 0.6, "black epoxy resin")
-GREY_RESIN = Material("grey_resin", (0.42, 0.44, 0.45, 1.0), 0.5, 0.6, "grey epoxy resin")
+RESIN = RecipeMaterial("black_resin", (0.07, 0.07, 0.08, 1.0), 0.5, 0.6, "black epoxy resin")
+GREY_RESIN = RecipeMaterial("grey_resin", (0.42, 0.44, 0.45, 1.0), 0.5, 0.6, "grey epoxy resin")
 
 
 # --- workshop ---------------------------------------------------------------------------------
@@ -66,7 +66,7 @@ def workbench(size: Vec3, rng: Rng) -> Design:
         (
             OAK,
             PINE,
-            Material("beech_block", (0.80, 0.62, 0.42, 1.0), 0.2, 0.3, "beech butcher-block"),
+            RecipeMaterial("beech_block", (0.80, 0.62, 0.42, 1.0), 0.2, 0.3, "beech butcher-block"),
         ),
     )
     frame = pick(rng, (top, BLACK_METAL, SPACE_GREY, BLUE_PAINT))
@@ -210,7 +210,7 @@ def lab_bench(size: Vec3, rng: Rng) -> Design:
             LAB_WHITE,
             OFFICE_GREY,
             SPACE_GREY,
-            Material("lab_blue", (0.35, 0.50, 0.70, 1.0), 0.4, 0.4, "blue"),
+            RecipeMaterial("lab_blue", (0.35, 0.50, 0.70, 1.0), 0.4, 0.4, "blue"),
         ),
     )
     handle = pick(rng, METAL_HANDLES)

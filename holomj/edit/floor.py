@@ -83,7 +83,7 @@ class Wish:
 
 
 @dataclass
-class Spot:
+class FloorSpot:
     """Where the object goes, and the verdict on every wish there."""
 
     x: float
@@ -276,7 +276,7 @@ class RoomFloor:
         yaw_deg: float | None = None,
         near: tuple[float, float] | None = None,
         within: float | None = None,
-    ) -> Spot:
+    ) -> FloorSpot:
         """The best free pose for an object of ``size3`` = (width, depth, height), see the
         module doc; ``near``/``within``: only candidates within that distance of a point,
         nearest first. Refused with the commonest broken rule when there is none."""
@@ -329,7 +329,7 @@ class RoomFloor:
             if problems:
                 broken[problems[0]] += 1
                 continue
-            return Spot(x, y, yaw % 360.0, self._verdicts(prep, new, poses, x, y, yaw))
+            return FloorSpot(x, y, yaw % 360.0, self._verdicts(prep, new, poses, x, y, yaw))
         what = f"{width:.2f} x {depth:.2f} m"
         if not broken:
             raise Refused(f"no floor in room {self.room.id!r} for a {what} footprint")

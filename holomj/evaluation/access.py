@@ -20,7 +20,7 @@ import shapely
 from shapely.geometry import Polygon
 
 from holomj.evaluation.folder import MeasuredFolder
-from holomj.evaluation.objects import SceneObject
+from holomj.evaluation.objects import EvaluatedObject
 from holomj.evaluation.reachability import ReachGrid
 from holomj.evaluation.vocabulary import Vocabulary
 
@@ -33,14 +33,14 @@ MIN_SPAN_M = 0.2
 class FrontZone:
     """The floor in front of an object's face: ``depth`` deep, ``lo``..``hi`` across."""
 
-    obj: SceneObject
+    obj: EvaluatedObject
     face: float
     lo: float
     hi: float
     depth: float
 
     @classmethod
-    def of(cls, obj: SceneObject, depth: float) -> FrontZone:
+    def of(cls, obj: EvaluatedObject, depth: float) -> FrontZone:
         """The zone in front of ``obj`` (the middle of its width, at least MIN_SPAN_M)."""
         fx, fy = obj.front
         lo, hi = obj.extent((-fy, fx))

@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from holomj.evaluation.objects import SceneObject
+from holomj.evaluation.objects import EvaluatedObject
 from holomj.evaluation.text import find_words, main_phrase
 from holomj.evaluation.vocabulary import Vocabulary
 
@@ -79,7 +79,7 @@ def rgba_colour(rgba: Iterable[float]) -> str:
     return "pink"
 
 
-def dominant_part(obj: SceneObject) -> dict[str, Any] | None:
+def dominant_part(obj: EvaluatedObject) -> dict[str, Any] | None:
     """The visual part with the largest surface area (the first when it cannot be measured)."""
     parts = (obj.meta or {}).get("visual") or []
     if not parts:
@@ -89,7 +89,7 @@ def dominant_part(obj: SceneObject) -> dict[str, Any] | None:
     return max(parts, key=lambda p: obj_area(obj.folder / p.get("mesh", "")))
 
 
-def object_colours(obj: SceneObject, vocab: Vocabulary) -> set[str]:
+def object_colours(obj: EvaluatedObject, vocab: Vocabulary) -> set[str]:
     """Colour families of an object: description's main phrase + its largest visual part."""
     main = main_phrase((obj.meta or {}).get("description", ""))
     colours = vocab.colour_words(main)
@@ -101,7 +101,7 @@ def object_colours(obj: SceneObject, vocab: Vocabulary) -> set[str]:
     return colours
 
 
-def object_materials(obj: SceneObject, vocab: Vocabulary) -> set[str]:
+def object_materials(obj: EvaluatedObject, vocab: Vocabulary) -> set[str]:
     """Material families: description's main phrase + the largest visual part's name."""
     main = main_phrase((obj.meta or {}).get("description", ""))
     found = vocab.material_words(main)
@@ -111,7 +111,7 @@ def object_materials(obj: SceneObject, vocab: Vocabulary) -> set[str]:
     return found
 
 
-def object_has_shape(obj: SceneObject, shape: str, vocab: Vocabulary) -> bool:
+def object_has_shape(obj: EvaluatedObject, shape: str, vocab: Vocabulary) -> bool:
     """Whether the object has ``shape`` by its description words or its geometry."""
     main = main_phrase((obj.meta or {}).get("description", ""))
     words = {vocab.shapes[w] for w in find_words(main, vocab.shapes)}

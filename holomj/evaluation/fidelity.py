@@ -37,7 +37,7 @@ from typing import Any
 from holomj.evaluation import quantified as quantified_
 from holomj.evaluation.attributes import object_colours, object_has_shape, object_materials
 from holomj.evaluation.folder import MeasuredFolder
-from holomj.evaluation.objects import SceneObject, SceneRoom
+from holomj.evaluation.objects import EvaluatedObject, EvaluatedRoom
 from holomj.evaluation.openings import door_clearance
 from holomj.evaluation.reachability import reachability
 from holomj.evaluation.relations import RELATIONS, Verdict
@@ -62,7 +62,7 @@ class Scorer:
 
     # -- selection
 
-    def rooms_of_type(self, room_name: str | None) -> list[SceneRoom] | None:
+    def rooms_of_type(self, room_name: str | None) -> list[EvaluatedRoom] | None:
         """The scene's rooms of an annotation's room type (None: no restriction)."""
         if not room_name:
             return None
@@ -81,7 +81,7 @@ class Scorer:
 
     def instances(
         self, name: str, room_name: str | None = None, entry: dict[str, Any] | None = None
-    ) -> list[SceneObject]:
+    ) -> list[EvaluatedObject]:
         """The scene's objects that count as ``name`` (in rooms of ``room_name`` when given; in the
         room and with the ids or categories that ``entry`` names, when it names them)."""
         entry = entry or {}

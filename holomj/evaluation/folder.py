@@ -21,7 +21,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import nearest_points
 
 from holomj.evaluation.geometry import oriented_rect
-from holomj.evaluation.objects import Opening, SceneObject, SceneRoom
+from holomj.evaluation.objects import EvaluatedObject, EvaluatedRoom, Opening
 from holomj.evaluation.text import id_noun
 from holomj.file_names import ASSETS_DIR, LIBRARY_META
 
@@ -49,7 +49,7 @@ class MeasuredFolder:
         self.wall_t = float(self.spec.get("wall_thickness", 0.1))
         self.wall_height = float(self.spec.get("wall_height") or DEFAULT_WALL_HEIGHT_M)
         self.rooms = [
-            SceneRoom(
+            EvaluatedRoom(
                 id=r["id"],
                 type=str(r.get("type") or ""),
                 poly=Polygon(r["polygon"]),
@@ -85,7 +85,7 @@ class MeasuredFolder:
             if isinstance(s, dict) and s.get("object_id") and s.get("category")
         }
 
-    def _object(self, o: dict[str, Any]) -> SceneObject:
+    def _object(self, o: dict[str, Any]) -> EvaluatedObject:
         meta, folder = self.assets.get(o.get("asset", ""), (None, None))
         category = str(o.get("category") or (meta or {}).get("category") or "").lower()
         labels = {category} if category not in GENERIC_CATEGORIES else set()
@@ -110,7 +110,7 @@ class MeasuredFolder:
         else:
             fp = box(lo[0], lo[1], hi[0], hi[1])
             center = ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2)
-        return SceneObject(
+        return EvaluatedObject(
             id=str(o["id"]),
             labels=labels,
             room=o.get("room"),
@@ -163,31 +163,31 @@ class MeasuredFolder:
 
     # -- walls
 
-    def _inset(self, room: SceneRoom, point: Point) -> float:
+    def _inset(self, room: EvaluatedRoom, point: Point) -> float:
         """Half the wall thickness where ``point`` (on ``room``'s boundary) is an interior wall."""
         for other in self.rooms:
             if other.id != room.id and other.poly.exterior.distance(point) < 1e-3:
                 return self.wall_t / 2
         return 0.0
 
-    def wall_edges(self, room: SceneRoom) -> list[LineString]:
+    def wall_edges(self, room: EvaluatedRoom) -> list[LineString]:
         """The edges of ``room``'s polygon."""
         coords = list(room.poly.exterior.coords)
         return [LineString([a, b]) for a, b in zip(coords[:-1], coords[1:]) if a != b]
 
-    def surface_distance(self, room: SceneRoom, geom: Any, edge: LineString) -> float:
+    def surface_distance(self, room: EvaluatedRoom, geom: Any, edge: LineString) -> float:
         """Distance from ``geom`` to the wall surface along ``edge``."""
         near = nearest_points(edge, geom)[0]
         return geom.distance(edge) - self._inset(room, near)
 
-    def nearest_wall(self, room: SceneRoom, geom: Any) -> tuple[float, LineString]:
+    def nearest_wall(self, room: EvaluatedRoom, geom: Any) -> tuple[float, LineString]:
         """The wall surface distance of ``geom`` and the edge it is measured to."""
         return min(
             ((self.surface_distance(room, geom, e), e) for e in self.wall_edges(room)),
             key=lambda t: t[0],
         )
 
-    def room_of(self, obj: SceneObject) -> SceneRoom | None:
+    def room_of(self, obj: EvaluatedObject) -> EvaluatedRoom | None:
         """The object's room (by id, else the room holding its centre)."""
         if obj.room in self.room_by_id:
             return self.room_by_id[obj.room]

@@ -15,7 +15,7 @@ FLOOR_OBJECT_MAX_BOTTOM = 0.3  # a bottom higher than this is not standing on th
 
 
 @dataclass
-class SceneRoom:
+class EvaluatedRoom:
     """A room: id, type, polygon, and the id's stem (``bedroom_1`` -> ``bedroom``)."""
 
     id: str
@@ -60,7 +60,7 @@ class Opening:
 
 
 @dataclass
-class SceneObject:
+class EvaluatedObject:
     """One object of objects.json with what the evaluator derives from it."""
 
     id: str

@@ -12,17 +12,19 @@ import math
 
 from holomj.evaluation import relations as rel_
 from holomj.evaluation.folder import MeasuredFolder
-from holomj.evaluation.objects import SceneObject
+from holomj.evaluation.objects import EvaluatedObject
 from holomj.evaluation.relations import Verdict
 
 PLACE_RELATIONS = ("against wall", "in corner", "middle")
 WALL_WORDS = ("wall", "walls")
 OPENING_WORDS = ("window", "windows", "door", "doors", "entrance", "door entrance")
 # One instance's verdict: the instance, whether it holds, and why.
-PerInstance = tuple[SceneObject, bool, str]
+PerInstance = tuple[EvaluatedObject, bool, str]
 
 
-def by_place(scene: MeasuredFolder, kind: str, subjects: list[SceneObject]) -> list[PerInstance]:
+def by_place(
+    scene: MeasuredFolder, kind: str, subjects: list[EvaluatedObject]
+) -> list[PerInstance]:
     """``kind`` of each subject to the room's walls (a corner, the middle, against, near or next
     to a wall)."""
     per: list[PerInstance] = []
@@ -43,7 +45,7 @@ def by_place(scene: MeasuredFolder, kind: str, subjects: list[SceneObject]) -> l
 
 
 def by_opening(
-    scene: MeasuredFolder, kind: str, subjects: list[SceneObject], opening: str
+    scene: MeasuredFolder, kind: str, subjects: list[EvaluatedObject], opening: str
 ) -> list[PerInstance]:
     """``kind`` of each subject to one of its room's windows (``opening`` a window word) or
     doors."""
@@ -60,8 +62,8 @@ def by_opening(
 def by_object(
     scene: MeasuredFolder,
     kind: str,
-    subjects: list[SceneObject],
-    objects: list[SceneObject],
+    subjects: list[EvaluatedObject],
+    objects: list[EvaluatedObject],
     target: str,
 ) -> list[PerInstance]:
     """``kind`` of each subject to any instance of the target in its room."""
@@ -85,7 +87,7 @@ def quantified(per: list[PerInstance], quantifier: str, subject: str) -> Verdict
     return Verdict(n_ok >= need, f"{n_ok}/{len(per)} {subject} ({quantifier}): {detail}")
 
 
-def around(subjects: list[SceneObject], objects: list[SceneObject]) -> Verdict:
+def around(subjects: list[EvaluatedObject], objects: list[EvaluatedObject]) -> Verdict:
     """Seats around a table: most of a table's seats (at least two) within
     :data:`~holomj.evaluation.relations.AROUND_M` of it, on at least two of its sides."""
     best = (0, 0, "")

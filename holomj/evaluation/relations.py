@@ -29,7 +29,7 @@ from shapely.geometry import LineString, Point
 
 from holomj.evaluation.folder import MeasuredFolder
 from holomj.evaluation.geometry import angle_deg, direction
-from holomj.evaluation.objects import Opening, SceneObject
+from holomj.evaluation.objects import EvaluatedObject, Opening
 
 BUFFER_M = 0.05  # footprints grown per side for "near" (Holodeck)
 NEAR_M = 1.5
@@ -76,22 +76,22 @@ class Verdict:
     reason: str
 
 
-def same_room(a: SceneObject, b: SceneObject) -> bool:
+def same_room(a: EvaluatedObject, b: EvaluatedObject) -> bool:
     """Whether two objects share a room (an object without a room shares every room)."""
     return a.room is None or b.room is None or a.room == b.room
 
 
-def near(s: SceneObject, o: SceneObject) -> bool:
+def near(s: EvaluatedObject, o: EvaluatedObject) -> bool:
     """Footprints, each grown by 5 cm, closer than 1.5 m."""
     return s.fp.buffer(BUFFER_M).distance(o.fp.buffer(BUFFER_M)) < NEAR_M
 
 
-def next_to(s: SceneObject, o: SceneObject) -> bool:
+def next_to(s: EvaluatedObject, o: EvaluatedObject) -> bool:
     """Footprints at most 0.5 m apart."""
     return s.fp.distance(o.fp) <= NEXT_TO_M
 
 
-def in_front(s: SceneObject, o: SceneObject, sign: float = 1.0) -> bool:
+def in_front(s: EvaluatedObject, o: EvaluatedObject, sign: float = 1.0) -> bool:
     """``s`` in front of ``o`` (behind it with ``sign`` -1)."""
     fx, fy = o.front
     f = (fx * sign, fy * sign)
@@ -109,31 +109,31 @@ def in_front(s: SceneObject, o: SceneObject, sign: float = 1.0) -> bool:
     return s.fp.distance(o.fp) <= FRONT_M
 
 
-def faces_point(s: SceneObject, target: tuple[float, float], limit: float) -> bool:
+def faces_point(s: EvaluatedObject, target: tuple[float, float], limit: float) -> bool:
     """Whether ``s`` looks at ``target`` within ``limit`` degrees."""
     v = (target[0] - s.center[0], target[1] - s.center[1])
     return angle_deg(s.view, v) <= limit
 
 
-def ray_hits(s: SceneObject, geom: Any) -> bool:
+def ray_hits(s: EvaluatedObject, geom: Any) -> bool:
     """Whether the ray ``s`` looks along meets ``geom``."""
     fx, fy = s.view
     ray = LineString([s.center, (s.center[0] + fx * 30.0, s.center[1] + fy * 30.0)])
     return ray.intersects(geom) and not s.fp.contains(geom)
 
 
-def facing(s: SceneObject, o: SceneObject) -> bool:
+def facing(s: EvaluatedObject, o: EvaluatedObject) -> bool:
     """``s`` looks at ``o``'s centre (30 degrees) or its ray meets ``o``'s footprint."""
     return faces_point(s, o.center, FACING_DEG) or ray_hits(s, o.fp)
 
 
-def wall_side(scene: MeasuredFolder, obj: SceneObject) -> tuple[float, LineString] | None:
+def wall_side(scene: MeasuredFolder, obj: EvaluatedObject) -> tuple[float, LineString] | None:
     """The distance to, and the edge of, the wall nearest ``obj`` in its room."""
     room = scene.room_of(obj)
     return scene.nearest_wall(room, obj.fp) if room is not None else None
 
 
-def across(scene: MeasuredFolder, s: SceneObject, o: SceneObject) -> bool:
+def across(scene: MeasuredFolder, s: EvaluatedObject, o: EvaluatedObject) -> bool:
     """Both face each other (45 degrees), or they stand at opposite parallel walls."""
     if faces_point(s, o.center, ACROSS_DEG) and faces_point(o, s.center, ACROSS_DEG):
         return True
@@ -144,7 +144,7 @@ def across(scene: MeasuredFolder, s: SceneObject, o: SceneObject) -> bool:
     return min(parallel, 180 - parallel) <= 10.0 and ws[1].distance(wo[1]) > 1.0
 
 
-def against_wall(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
+def against_wall(scene: MeasuredFolder, s: EvaluatedObject) -> tuple[bool, str]:
     """The back edge within 15 cm of a wall surface, parallel within 20 degrees."""
     room = scene.room_of(s)
     if room is None:
@@ -172,7 +172,7 @@ def against_wall(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
     return best[0] <= WALL_M, best[1]
 
 
-def in_corner(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
+def in_corner(scene: MeasuredFolder, s: EvaluatedObject) -> tuple[bool, str]:
     """The footprint within 20 cm of both walls of a convex corner of its room."""
     room = scene.room_of(s)
     if room is None:
@@ -192,7 +192,7 @@ def in_corner(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
     return best <= CORNER_M, f"{best:.2f} m from the farther wall of its nearest corner"
 
 
-def middle(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
+def middle(scene: MeasuredFolder, s: EvaluatedObject) -> tuple[bool, str]:
     """More than 1 m from every wall, or centred in a small room."""
     room = scene.room_of(s)
     if room is None:
@@ -207,7 +207,7 @@ def middle(scene: MeasuredFolder, s: SceneObject) -> tuple[bool, str]:
     )
 
 
-def on(s: SceneObject, o: SceneObject) -> bool:
+def on(s: EvaluatedObject, o: EvaluatedObject) -> bool:
     """``s`` was dropped on ``o`` or rests on its top or a surface, centre over its footprint."""
     if s.support is not None and s.support == o.id:
         return True
@@ -216,7 +216,7 @@ def on(s: SceneObject, o: SceneObject) -> bool:
     return resting and o.fp.buffer(0.02).contains(Point(s.center)) and s.id != o.id
 
 
-def above(s: SceneObject, o: SceneObject) -> bool:
+def above(s: EvaluatedObject, o: EvaluatedObject) -> bool:
     """Bottom above ``o``'s top and footprints within 30 cm, overlapping along an axis."""
     if s.zmin < o.zmax - ABOVE_SLACK_M or s.fp.distance(o.fp) > ABOVE_PLAN_M:
         return False
@@ -225,7 +225,7 @@ def above(s: SceneObject, o: SceneObject) -> bool:
     return min(sx1, ox1) - max(sx0, ox0) > 0 or min(sy1, oy1) - max(sy0, oy0) > 0
 
 
-def sides_of(o: SceneObject, subjects: list[SceneObject]) -> set[int]:
+def sides_of(o: EvaluatedObject, subjects: list[EvaluatedObject]) -> set[int]:
     """Which of ``o``'s four sides (front, left, back, right) the subjects stand at."""
     sides = set()
     for s in subjects:
@@ -235,7 +235,7 @@ def sides_of(o: SceneObject, subjects: list[SceneObject]) -> set[int]:
     return sides
 
 
-def opening_relation(rel: str, s: SceneObject, op: Opening) -> bool:
+def opening_relation(rel: str, s: EvaluatedObject, op: Opening) -> bool:
     """Whether ``s`` is ``rel`` to the door or window ``op``."""
     seg = op.segment
     normal = op.normals.get(s.room or "", next(iter(op.normals.values()), (0.0, 1.0)))
@@ -263,7 +263,7 @@ def opening_relation(rel: str, s: SceneObject, op: Opening) -> bool:
     return False
 
 
-def pair_relation(scene: MeasuredFolder, kind: str, s: SceneObject, o: SceneObject) -> bool:
+def pair_relation(scene: MeasuredFolder, kind: str, s: EvaluatedObject, o: EvaluatedObject) -> bool:
     """Whether ``s`` is ``kind`` to the object ``o``."""
     if kind == "near":
         return near(s, o)

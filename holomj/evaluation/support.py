@@ -24,7 +24,7 @@ from typing import Any
 from shapely.geometry import Point, Polygon
 
 from holomj.evaluation.folder import MeasuredFolder
-from holomj.evaluation.objects import SceneObject
+from holomj.evaluation.objects import EvaluatedObject
 from holomj.evaluation.vocabulary import Vocabulary
 
 FLOOR_M = 0.03
@@ -59,7 +59,7 @@ class Support:
         }
 
 
-def _tops(obj: SceneObject) -> list[tuple[float, Polygon]]:
+def _tops(obj: EvaluatedObject) -> list[tuple[float, Polygon]]:
     """Heights and outlines of the places others may rest on ``obj``."""
     tops = [(obj.zmax, obj.fp)]
     for surface in [*obj.surfaces, *obj.interior_surfaces]:
@@ -71,7 +71,7 @@ def _tops(obj: SceneObject) -> list[tuple[float, Polygon]]:
     return tops
 
 
-def _near_wall(scene: MeasuredFolder, obj: SceneObject) -> bool:
+def _near_wall(scene: MeasuredFolder, obj: EvaluatedObject) -> bool:
     room = scene.room_of(obj)
     if room is None:
         return False
@@ -79,7 +79,7 @@ def _near_wall(scene: MeasuredFolder, obj: SceneObject) -> bool:
 
 
 def rests_on(
-    scene: MeasuredFolder, obj: SceneObject, vocab: Vocabulary
+    scene: MeasuredFolder, obj: EvaluatedObject, vocab: Vocabulary
 ) -> tuple[str | None, str, float]:
     """(what ``obj`` rests on, how that was found, the area it rests on in m²)."""
     if obj.labels & vocab.wall_mounted and _near_wall(scene, obj):
@@ -87,7 +87,7 @@ def rests_on(
     if obj.zmin <= FLOOR_M:
         return "floor", f"bottom {obj.zmin:.3f} m", 0.0
     centre = Point(obj.center)
-    best: tuple[float, SceneObject, Polygon] | None = None
+    best: tuple[float, EvaluatedObject, Polygon] | None = None
     for other in scene.objects:
         if other is obj:
             continue
@@ -112,7 +112,7 @@ def rests_on(
     return None, f"bottom {obj.zmin:.2f} m above the floor, nothing under it", 0.0
 
 
-def judge(obj: SceneObject, on: str | None, area: float, vocab: Vocabulary) -> tuple[bool, str]:
+def judge(obj: EvaluatedObject, on: str | None, area: float, vocab: Vocabulary) -> tuple[bool, str]:
     """Whether resting on ``on`` (over ``area`` m²) is plausible for ``obj``, and why."""
     furniture = bool(obj.labels & vocab.floor_furniture)
     ceiling = bool(obj.labels & vocab.ceiling_mounted)

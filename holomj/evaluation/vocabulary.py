@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from holomj.evaluation.text import find_words, normalise, singular_forms, slug
 
 if TYPE_CHECKING:
-    from holomj.evaluation.objects import SceneRoom
+    from holomj.evaluation.objects import EvaluatedRoom
 
 
 def default_vocabulary_file() -> Path:
@@ -80,7 +80,7 @@ class Vocabulary:
         """The canonical room type of an annotation's room name, if the vocabulary knows it."""
         return _looked_up(self.room_lookup, name)
 
-    def room_type_of(self, room: SceneRoom) -> str | None:
+    def room_type_of(self, room: EvaluatedRoom) -> str | None:
         """The first canonical room type of a scene room: by its ``type``, else its id's stem."""
         for value in (room.type, room.stem):
             if not value:
@@ -90,7 +90,7 @@ class Vocabulary:
                     return canon
         return None
 
-    def room_is(self, room: SceneRoom, canon: str) -> bool:
+    def room_is(self, room: EvaluatedRoom, canon: str) -> bool:
         """Whether a scene room counts as the canonical room type ``canon``."""
         types = self.room_types.get(canon, [canon.replace(" ", "_")])
         return any(v and v.lower() in types for v in (room.type, room.stem))

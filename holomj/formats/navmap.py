@@ -51,7 +51,7 @@ ROBOT_COLOUR = (50, 100, 220)
 MIN_IMAGE_PX = 480
 
 
-class FloorGrid(Protocol):
+class FloorGridView(Protocol):
     """The free-floor grid of a scene (what :class:`holomj.robots.occupancy.FloorGrid` holds)."""
 
     @property
@@ -73,7 +73,7 @@ class FloorGrid(Protocol):
     def centres(self) -> tuple[np.ndarray, np.ndarray]: ...
 
 
-class Entrance(Protocol):
+class EntranceView(Protocol):
     """Where the house is entered (what :class:`holomj.robots.reach.Entrance` holds)."""
 
     @property
@@ -84,13 +84,13 @@ class Entrance(Protocol):
     def position(self) -> tuple[float, float] | None: ...
 
 
-class Reach(Protocol):
+class ReachView(Protocol):
     """Reachability on a floor grid (what :class:`holomj.robots.reach.Reach` holds)."""
 
     @property
     def agent_radius(self) -> float: ...
     @property
-    def entrance(self) -> Entrance: ...
+    def entrance(self) -> EntranceView: ...
     @property
     def walkable(self) -> np.ndarray: ...
     @property
@@ -102,8 +102,8 @@ class Reach(Protocol):
 class NavMap:
     """A scene's floor grid and its reachability for one agent radius."""
 
-    grid: FloorGrid
-    reach: Reach
+    grid: FloorGridView
+    reach: ReachView
     z_band: tuple[float, float]
     robot: dict[str, Any] | None = None
 
@@ -169,7 +169,7 @@ class NavMap:
 
 
 def navmap_of(
-    grid: FloorGrid, reach: Reach, z_band: tuple[float, float], robot: RobotRecord | None
+    grid: FloorGridView, reach: ReachView, z_band: tuple[float, float], robot: RobotRecord | None
 ) -> NavMap:
     """The navigation map of a scene's floor ``grid`` and ``reach`` (computed for the objects
     between the heights ``z_band``), with the scene's robot marked when it has one."""

@@ -43,7 +43,7 @@ def counter_shape(asset_id: str) -> str | None:
 
 
 @dataclass(frozen=True)
-class _Run:
+class _CounterRun:
     suffix: str
     centre: tuple[float, float]  # in the object's frame
     size: Size  # in the run's own frame (depth, width, height)
@@ -61,10 +61,10 @@ def split_counter(
     depth, width, height = size
     d = min(COUNTER_DEPTH_M, depth / 2, width / 2)
     side_length = depth - d
-    runs = [_Run("", (-depth / 2 + d / 2, 0.0), (d, width, height), 0.0)]
+    runs = [_CounterRun("", (-depth / 2 + d / 2, 0.0), (d, width, height), 0.0)]
     sides = [
-        _Run("_side_left", (d / 2, width / 2 - d / 2), (d, side_length, height), -90.0),
-        _Run("_side_right", (d / 2, -width / 2 + d / 2), (d, side_length, height), 90.0),
+        _CounterRun("_side_left", (d / 2, width / 2 - d / 2), (d, side_length, height), -90.0),
+        _CounterRun("_side_right", (d / 2, -width / 2 + d / 2), (d, side_length, height), 90.0),
     ]
     if shape == "C":
         runs += sides
@@ -102,7 +102,7 @@ def _world(obj: SceneObject, local: tuple[float, float]) -> tuple[float, float]:
     return (obj.position[0] + c * lx - s * ly, obj.position[1] + s * lx + c * ly)
 
 
-def _wall_distance(obj: SceneObject, run: _Run, room: Polygon | None) -> float:
+def _wall_distance(obj: SceneObject, run: _CounterRun, room: Polygon | None) -> float:
     """How far the run's centre is from its room's walls (0 without a room)."""
     if room is None:
         return 0.0

@@ -22,14 +22,14 @@ from typing import Any
 from holomj.file_names import OBJECTS_JSON
 from holomj.jobs.folder import read_json_report, read_scene
 from holomj.refinement.pointing import PinholeCamera
-from holomj.refinement.summary import ObjectInfo, RoomInfo, SceneSummary
+from holomj.refinement.summary import ObjectInfo, PlannerSceneSummary, RoomInfo
 
 FLOOR_Z_M = 0.05
 POINTING_FOVY_DEG = 45.0
 POINTING_MARGIN = 1.15
 
 
-def scene_summary(folder: Path) -> SceneSummary:
+def scene_summary(folder: Path) -> PlannerSceneSummary:
     """The summary of the scene in ``folder`` (see the module docstring)."""
     scene = read_scene(folder)
     record = read_json_report(folder, OBJECTS_JSON) or {}
@@ -86,7 +86,7 @@ def scene_summary(folder: Path) -> SceneSummary:
         {"id": d.id, "rooms": list(d.rooms), "position": [round(v, 3) for v in d.position]}
         for d in scene.doors
     ]
-    return SceneSummary(
+    return PlannerSceneSummary(
         rooms=rooms,
         objects=objects,
         windows=windows,

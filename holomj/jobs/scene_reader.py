@@ -43,7 +43,7 @@ class Pose:
 
 
 @dataclass(frozen=True)
-class ObjectInfo:
+class TaskObjectInfo:
     """One object of a scene, as a robot-learning task needs it."""
 
     id: str
@@ -119,11 +119,11 @@ class Scene:
         return list(self.spec.rooms)
 
     @cached_property
-    def objects(self) -> list[ObjectInfo]:
+    def objects(self) -> list[TaskObjectInfo]:
         """Every object, in the scene's order."""
         return [self._info(obj) for obj in self.spec.objects]
 
-    def object(self, object_id: str) -> ObjectInfo:
+    def object(self, object_id: str) -> TaskObjectInfo:
         """The object ``object_id``; an error naming close ids when there is none."""
         for info in self.objects:
             if info.id == object_id:
@@ -135,7 +135,7 @@ class Scene:
             fix=f"did you mean {near}?" if near else None,
         )
 
-    def in_room(self, room_id: str) -> list[ObjectInfo]:
+    def in_room(self, room_id: str) -> list[TaskObjectInfo]:
         """The objects of one room."""
         return [o for o in self.objects if o.room == room_id]
 
@@ -213,11 +213,11 @@ class Scene:
             self.__dict__.pop("objects", None)  # the cached object list
         return report
 
-    def _info(self, obj: SceneObject) -> ObjectInfo:
+    def _info(self, obj: SceneObject) -> TaskObjectInfo:
         meta = self.library.get(obj.asset).meta if obj.asset in self.library else None
         sx, sy, sz = obj.scale3
         size = (meta.size[0] * sx, meta.size[1] * sy, meta.size[2] * sz) if meta else (sx, sy, sz)
-        return ObjectInfo(
+        return TaskObjectInfo(
             id=obj.id,
             category=meta.category if meta is not None else obj.asset,
             asset=obj.asset,

@@ -418,7 +418,7 @@ def _doors_connected(labels: np.ndarray, cells: Sequence[np.ndarray]) -> bool:
 
 
 @dataclass(frozen=True)
-class Thresholds:
+class LayoutThresholds:
     """The numbers behind the constraint words (metres), see :class:`LayoutSettings`."""
 
     near: float = 1.5
@@ -450,7 +450,7 @@ def relation_holds(
     yt: np.ndarray | float,
     kt: int,
     size_t: tuple[float, float],
-    th: Thresholds,
+    th: LayoutThresholds,
 ) -> np.ndarray:
     """Whether object A (centre ``xa, ya``, yaw index ``ka``, ``(width, depth)``) stands in
     relation ``kind`` to target T. Vectorised over A's centre and over T's centre.

@@ -30,7 +30,7 @@ Catalogue = Mapping[str, Sequence[tuple[str, float]]]
 
 
 @dataclass(frozen=True)
-class Proposal:
+class ReceptacleProposal:
     """Put ``count`` objects of ``category`` on the receptacle ``receptacle_id``."""
 
     receptacle_id: str
@@ -59,7 +59,7 @@ def propose_small_objects(
     rng: np.random.Generator,
     *,
     max_per_receptacle: int = MAX_PER_RECEPTACLE,
-) -> list[Proposal]:
+) -> list[ReceptacleProposal]:
     """Proposals for every receptacle given as (object id, asset metadata, room type).
 
     ``catalogue`` None means the shipped one. Counts per category are one multinomial draw of
@@ -69,7 +69,7 @@ def propose_small_objects(
     if max_per_receptacle < 0:
         raise SpecError(f"max_per_receptacle is {max_per_receptacle}", fix="use 0 or more")
     table = _default_catalogue() if catalogue is None else parse_catalogue(dict(catalogue))
-    proposals: list[Proposal] = []
+    proposals: list[ReceptacleProposal] = []
     for object_id, meta, room_type in receptacles:
         items = table.get(receptacle_key(f"{room_type}:{meta.category}")) or table.get(
             receptacle_key(meta.category)
@@ -87,5 +87,7 @@ def propose_small_objects(
         for (category, _), count in zip(items, counts):
             if count > 0:
                 merged[category] = merged.get(category, 0) + int(count)
-        proposals.extend(Proposal(object_id, category, count) for category, count in merged.items())
+        proposals.extend(
+            ReceptacleProposal(object_id, category, count) for category, count in merged.items()
+        )
     return proposals

@@ -314,7 +314,7 @@ def problem_from_data(data: Any, source: str = "<problem>") -> RoomProblem:
 
 
 @dataclass(frozen=True)
-class Item:
+class ProblemItem:
     """An object to place, in metres, with its index in the problem."""
 
     index: int
@@ -354,17 +354,19 @@ class PreparedRoom:
         parsed = problem.all_constraints()
         self.constraints = parsed.constraints
         self.warnings = list(parsed.warnings)
-        self.items: list[Item] = []
+        self.items: list[ProblemItem] = []
         for index, obj in enumerate(problem.objects):
             width, depth, height = problem.object_size_m(obj)
             blocked = tuple(
                 k for k, w in enumerate(problem.windows) if height is None or height > w.sill_height
             )
             self.items.append(
-                Item(index, obj.id, width, depth, height, bool(blocked), obj.priority, blocked)
+                ProblemItem(
+                    index, obj.id, width, depth, height, bool(blocked), obj.priority, blocked
+                )
             )
         self.index = {item.id: item.index for item in self.items}
-        self.thresholds = geo.Thresholds(
+        self.thresholds = geo.LayoutThresholds(
             near=s.near_m,
             far=s.far_m,
             in_front_max_gap=s.in_front_max_gap_m,

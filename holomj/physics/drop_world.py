@@ -37,7 +37,7 @@ SLEEP = int(mujoco.mjtEnableBit.mjENBL_SLEEP)
 CHUNK_STEPS = 25  # steps between checks for rest (sleep) during a drop
 
 
-class _Run:
+class _DropRun:
     """One candidate drop: its own MjData (fresh sleep state) and a single-thread Rollout.
 
     ``Rollout.rollout`` releases the GIL, so runs on different Python threads step in parallel.
@@ -53,7 +53,7 @@ class _Run:
         self.steps = 0
         self.warned = False
 
-    def start(self, model: mujoco.MjModel, state: np.ndarray) -> _Run:
+    def start(self, model: mujoco.MjModel, state: np.ndarray) -> _DropRun:
         mujoco.mj_resetData(model, self.data)
         # Fill every derived quantity first (sleeping off): stepping a fresh MjData with
         # sleeping on can meet uninitialised frames (MuJoCo 3.17: "contact frame undefined").
@@ -115,7 +115,7 @@ class DropWorld:
         self._scratch = mujoco.MjData(self.model)
         self.nthread = max(1, nthread)
         m = self.model
-        self._slots = [_Run(m) for _ in range(self.nthread)]
+        self._slots = [_DropRun(m) for _ in range(self.nthread)]
         self._pool = ThreadPoolExecutor(self.nthread) if self.nthread > 1 else None
         self._collider = (m.geom_contype != 0) | (m.geom_conaffinity != 0)
         self._contype = m.geom_contype.copy()
@@ -259,7 +259,7 @@ class DropWorld:
                     verdicts[k] = (outcome, judge(k, outcome))
         return [v if v is not None else (None, None) for v in verdicts]
 
-    def _step_all(self, runs: list[_Run], nstep: int) -> None:
+    def _step_all(self, runs: list[_DropRun], nstep: int) -> None:
         """Advance runs in parallel with sleeping on (only while they step: the checks made
         on the scratch data must see every contact, asleep or not)."""
         m = self.model

@@ -79,7 +79,7 @@ Request = tuple[str, int]
 
 
 @dataclass(frozen=True)
-class Placement:
+class SpawnPlacement:
     """What happened to one requested object."""
 
     object_id: str
@@ -103,11 +103,11 @@ class Placement:
 
 
 @dataclass(frozen=True)
-class PopulateResult:
+class SpawnResult:
     """The populated scene and every placement outcome."""
 
     scene: SceneSpec
-    placements: list[Placement]
+    placements: list[SpawnPlacement]
     receptacle_drift_m: float = 0.0  # how far the receptacle moved during the drops
     seconds: float = 0.0
 
@@ -153,7 +153,7 @@ def populate(
     nthread: int | None = None,
     attach: Callable[[CompiledScene], CompiledScene] | None = None,
     inside: list[Request] | None = None,
-) -> PopulateResult:
+) -> SpawnResult:
     """Drop the requested small objects onto ``receptacle_id`` (see the module docstring);
     those of ``inside`` go into it (onto its interior surfaces).
 
@@ -177,7 +177,7 @@ def populate(
     if inside:
         jobs += _make_jobs(scene, library, inside, rng, inside=True, first=jobs)
     if not jobs:
-        return PopulateResult(scene, [], 0.0, time.perf_counter() - start)
+        return SpawnResult(scene, [], 0.0, time.perf_counter() - start)
 
     parked = _parked_scene(scene, receptacle, jobs)
     compiled = compile_scene(parked, library, furniture="as-is")
@@ -190,7 +190,7 @@ def populate(
     bodies = _surface_bodies(world, receptacle_id, interior)
 
     placed: list[str] = []
-    outcomes: dict[str, Placement] = {}
+    outcomes: dict[str, SpawnPlacement] = {}
     order = sorted(jobs, key=lambda j: (-_footprint_area(j.asset, 1.0), j.order))
     try:
         for job in order:
@@ -211,7 +211,7 @@ def populate(
         if p.accepted and p.final_pose is not None
     ]
     populated = scene.model_copy(update={"objects": [*scene.objects, *new_objects]})
-    return PopulateResult(
+    return SpawnResult(
         scene=SceneSpec.model_validate(populated.model_dump()),
         placements=placements,
         receptacle_drift_m=float(np.linalg.norm(rec_end - rec_start)),
@@ -343,7 +343,7 @@ def _place_one(
     drop_height: float,
     nstep: int,
     batch: int,
-) -> Placement:
+) -> SpawnPlacement:
     start = time.perf_counter()
     meta = job.asset.meta
     rng = np.random.default_rng(job.seed)
@@ -514,10 +514,10 @@ def _placement(
     rejections: Counter[str],
     start: float,
     accepted: tuple[int, dict[str, Any]] | None = None,
-) -> Placement:
+) -> SpawnPlacement:
     """The outcome of placing ``job``; ``accepted``: the surface index and final pose of the
     candidate that came to rest (None: none did, for ``reason``)."""
-    return Placement(
+    return SpawnPlacement(
         object_id=job.object_id,
         asset=job.asset.meta.id,
         surface_index=accepted[0] if accepted else None,
@@ -545,7 +545,7 @@ def _final_pose(outcome: Outcome, lift: float, surface_height: float) -> dict[st
     }
 
 
-def _scene_object(job: _Job, placement: Placement, receptacle: SceneObject) -> SceneObject:
+def _scene_object(job: _Job, placement: SpawnPlacement, receptacle: SceneObject) -> SceneObject:
     pose = placement.final_pose or {}
     quat = tuple(pose["quat"])
     w, x, y, z = quat
@@ -562,8 +562,8 @@ def _scene_object(job: _Job, placement: Placement, receptacle: SceneObject) -> S
 
 
 __all__ = [
-    "Placement",
-    "PopulateResult",
+    "SpawnPlacement",
+    "SpawnResult",
     "object_yaw",
     "populate",
     "resolve_request",

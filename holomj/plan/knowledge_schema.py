@@ -86,7 +86,7 @@ class Generic(FrozenModel):
     aliases: list[Phrase] = Field(min_length=1)
 
 
-class Refused(FrozenModel):
+class RefusedThings(FrozenModel):
     """Things the planner never plans, with the reason it gives."""
 
     aliases: list[Phrase] = Field(min_length=1)
@@ -98,7 +98,7 @@ class ObjectsFile(FrozenModel):
 
     objects: dict[ObjectName, ObjectKind]
     generics: dict[ObjectName, Generic] = Field(default_factory=dict)
-    refused: dict[ObjectName, Refused] = Field(default_factory=dict)
+    refused: dict[ObjectName, RefusedThings] = Field(default_factory=dict)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -349,7 +349,7 @@ class KnowledgeBase(FrozenModel):
 
     objects: dict[ObjectName, ObjectKind]
     generics: dict[ObjectName, Generic]
-    refused: dict[ObjectName, Refused]
+    refused: dict[ObjectName, RefusedThings]
     rooms: dict[Identifier, RoomTemplate]
     scene_types: dict[Identifier, SceneType]
     limits: Limits

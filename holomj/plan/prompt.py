@@ -187,7 +187,7 @@ def parse_prompt(text: str, kb: KnowledgeBase) -> ParsedPrompt:
 
 
 @dataclass
-class _Found:
+class _PromptMentions:
     """What the phrases of a prompt name, apart from the scene."""
 
     rooms: list[RoomMention] = field(default_factory=list)
@@ -198,9 +198,11 @@ class _Found:
     windows: int | None = None
 
 
-def _read_mentions(reader: Reader, scene: Mention | None, sizes: dict[int, SizeRead]) -> _Found:
+def _read_mentions(
+    reader: Reader, scene: Mention | None, sizes: dict[int, SizeRead]
+) -> _PromptMentions:
     """Rooms, objects, refused things, styles and windows, with their quantities."""
-    found = _Found()
+    found = _PromptMentions()
     neg_scopes = negation_scopes(reader.words)
     context: str | None = None  # template of the room whose "with ..." list this is
     last_end = 0
@@ -311,7 +313,7 @@ def _object_of(mention: Mention) -> bool:
     return mention.meaning("object") is not None or mention.meaning("generic") is not None
 
 
-def _is_part_of_previous(reader: Reader, found: _Found, mention: Mention) -> bool:
+def _is_part_of_previous(reader: Reader, found: _PromptMentions, mention: Mention) -> bool:
     """Whether an object phrase names a part of the object before it ("with a red seat")."""
     if not found.spans:
         return False
@@ -319,7 +321,7 @@ def _is_part_of_previous(reader: Reader, found: _Found, mention: Mention) -> boo
     return part is not None and part[0] <= mention.start and mention.end == part[1]
 
 
-def _attach_parts(reader: Reader, found: _Found) -> None:
+def _attach_parts(reader: Reader, found: _PromptMentions) -> None:
     """Part phrases after each object ("cabinets with brass handles") kept with the object, and
     their words taken out of the unknown-noun search."""
     for n, (_, end) in enumerate(found.spans):

@@ -36,7 +36,7 @@ class SizeRead:
 
 
 @dataclass(frozen=True)
-class _Found:
+class _FoundSize:
     """A size in the words: a room size, a wall height, or an object's height (``tall``);
     ``side``: one length read as a square."""
 
@@ -83,7 +83,7 @@ def read_sizes(reader: Reader) -> dict[int, SizeRead]:
     return out
 
 
-def _size_at(words: Sequence[str], i: int) -> tuple[int, _Found] | None:
+def _size_at(words: Sequence[str], i: int) -> tuple[int, _FoundSize] | None:
     """A size starting at ``words[i]``: (end, what it is)."""
     if not is_number(words[i]):
         return None
@@ -93,7 +93,7 @@ def _size_at(words: Sequence[str], i: int) -> tuple[int, _Found] | None:
     if unit is not None:
         j += 1
     if j < len(words) and words[j] in _AREA_WORDS:
-        return j + 1, _Found(SizeRead(area_m2=value * _AREA_WORDS[words[j]]))
+        return j + 1, _FoundSize(SizeRead(area_m2=value * _AREA_WORDS[words[j]]))
     if j + 1 < len(words) and words[j] in _BY and is_number(words[j + 1]):
         other = float(words[j + 1])
         k = j + 2
@@ -101,14 +101,14 @@ def _size_at(words: Sequence[str], i: int) -> tuple[int, _Found] | None:
         if unit2 is not None:
             k += 1
         scale = unit or unit2 or 1.0
-        return k, _Found(SizeRead(dims=(value * (unit or scale), other * (unit2 or scale))))
+        return k, _FoundSize(SizeRead(dims=(value * (unit or scale), other * (unit2 or scale))))
     if unit is None:
         return None
     if _CEILING & set(words[max(0, i - 3) : j + 3]):
-        return j, _Found(height=value * unit)
+        return j, _FoundSize(height=value * unit)
     if j < len(words) and words[j] in _HEIGHT_WORDS:
-        return j + 1, _Found(tall=True)
-    return j, _Found(SizeRead(dims=(value * unit, value * unit)), side=True)
+        return j + 1, _FoundSize(tall=True)
+    return j, _FoundSize(SizeRead(dims=(value * unit, value * unit)), side=True)
 
 
 def _nearest_room_word(reader: Reader, start: int, end: int) -> int | None:

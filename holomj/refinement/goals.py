@@ -37,12 +37,12 @@ from typing import Any
 
 from holomj.evaluation.plan_spec import RELATION_MAP
 from holomj.refinement.instruction_items import Instruction, Item
-from holomj.refinement.summary import SceneSummary
+from holomj.refinement.summary import PlannerSceneSummary
 
 TOLERANCE = 1e-9
 
 
-def instruction_spec(instruction: Instruction, before: SceneSummary) -> dict[str, Any]:
+def instruction_spec(instruction: Instruction, before: PlannerSceneSummary) -> dict[str, Any]:
     """The annotation of ``instruction`` (see the module docstring), counted against the scene
     ``before`` refine changed it."""
     objects: list[dict[str, Any]] = []

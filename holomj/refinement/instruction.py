@@ -37,7 +37,7 @@ from holomj.plan.new_kinds import kind_name
 from holomj.plan.prompt import ObjectRequest, ParsedPrompt, parse_prompt
 from holomj.refinement.clauses import TO_PLACE, clause_verb, split_clauses
 from holomj.refinement.instruction_items import Instruction, Item
-from holomj.refinement.summary import ObjectInfo, RoomInfo, SceneSummary
+from holomj.refinement.summary import ObjectInfo, PlannerSceneSummary, RoomInfo
 from holomj.spec.relations import EDIT_KIND_OF, EDIT_PLACE_KINDS, kinds_about
 
 MAX_QUANTITY = 6
@@ -51,7 +51,7 @@ PLACE_KINDS = frozenset(EDIT_PLACE_KINDS)
 
 def read_instruction(
     text: str,
-    scene: SceneSummary,
+    scene: PlannerSceneSummary,
     kb: KnowledgeBase | None = None,
     vocab: Vocabulary | None = None,
 ) -> Instruction:
@@ -80,7 +80,7 @@ class _Clause:
         number: int,
         action: str,
         text: str,
-        scene: SceneSummary,
+        scene: PlannerSceneSummary,
         kb: KnowledgeBase,
         vocab: Vocabulary,
         result: Instruction,

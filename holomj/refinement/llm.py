@@ -45,7 +45,7 @@ from holomj.refinement.safety import (
     default_add_id,
     next_id,
 )
-from holomj.refinement.summary import SceneSummary
+from holomj.refinement.summary import PlannerSceneSummary
 from holomj.spec.edit import operations_schema
 
 R = TypeVar("R")
@@ -233,7 +233,7 @@ class LLMProposal:
 
 def refine_question(
     instruction: Instruction,
-    scene: SceneSummary,
+    scene: PlannerSceneSummary,
     checks: list[dict[str, Any]],
     problems: list[str],
     feedback: list[str],
@@ -281,7 +281,7 @@ def refine_question(
 def propose(
     chat: VisionChat,
     instruction: Instruction,
-    scene: SceneSummary,
+    scene: PlannerSceneSummary,
     checks: list[dict[str, Any]],
     problems: list[str],
     feedback: list[str],
@@ -316,7 +316,7 @@ def propose(
 
 
 def add_namer(
-    instruction: Instruction, scene: SceneSummary
+    instruction: Instruction, scene: PlannerSceneSummary
 ) -> Callable[[dict[str, Any], set[str]], str]:
     """Ids for the model's adds: an add of an instruction item's kind in its room gets the
     item's id stem (so the instruction's checks count it), any other ``<room>.refine.<noun>``."""

@@ -29,7 +29,7 @@ from typing import Any
 from holomj.refinement.finding import Finding
 from holomj.refinement.instruction_items import Instruction, Item
 from holomj.refinement.safety import MAX_OPS_PER_ROUND, next_id
-from holomj.refinement.summary import SceneSummary
+from holomj.refinement.summary import PlannerSceneSummary
 
 
 @dataclass
@@ -50,7 +50,7 @@ def signature(op: dict[str, Any]) -> str:
 
 def propose(
     instruction: Instruction,
-    scene: SceneSummary,
+    scene: PlannerSceneSummary,
     checks: list[dict[str, Any]],
     findings: Iterable[Finding] = (),
     tried: set[str] | None = None,
@@ -66,7 +66,7 @@ class _Planner:
     def __init__(
         self,
         instruction: Instruction,
-        scene: SceneSummary,
+        scene: PlannerSceneSummary,
         checks: list[dict[str, Any]],
         tried: set[str],
         max_ops: int,

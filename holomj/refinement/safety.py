@@ -26,7 +26,7 @@ from typing import Any
 
 from holomj.errors import HolomjError
 from holomj.plan.llm_json import LLMResponseError, extract_json_object
-from holomj.refinement.summary import SceneSummary
+from holomj.refinement.summary import PlannerSceneSummary
 from holomj.spec.edit import MAX_OPERATIONS, parse_operations
 
 MAX_OPS_PER_ROUND = 8
@@ -67,7 +67,7 @@ class Checked:
 
 def check_reply(
     content: str,
-    scene: SceneSummary,
+    scene: PlannerSceneSummary,
     *,
     max_ops: int = MAX_OPS_PER_ROUND,
     name_add: Callable[[dict[str, Any], set[str]], str] | None = None,
@@ -129,7 +129,7 @@ def _strings(value: Any) -> list[str]:
 
 
 def _check_one(
-    raw: Any, index: int, scene: SceneSummary, known: set[str], renamed: dict[str, str]
+    raw: Any, index: int, scene: PlannerSceneSummary, known: set[str], renamed: dict[str, str]
 ) -> dict[str, Any]:
     if not isinstance(raw, dict):
         raise _Refuse("an operation must be a JSON object")
@@ -196,13 +196,13 @@ def _known(object_id: str, known: set[str], what: str) -> None:
         raise _Refuse(f"unknown {what} {object_id!r}{hint}")
 
 
-def _room(room: str | None, scene: SceneSummary) -> None:
+def _room(room: str | None, scene: PlannerSceneSummary) -> None:
     if room is not None and scene.room(room) is None:
         rooms = ", ".join(r.id for r in scene.rooms)
         raise _Refuse(f"unknown room {room!r} (rooms: {rooms})")
 
 
-def _size(size: list[float] | None, scene: SceneSummary) -> None:
+def _size(size: list[float] | None, scene: PlannerSceneSummary) -> None:
     if size is None:
         return
     xmin, ymin, xmax, ymax = scene.bounds
@@ -217,7 +217,7 @@ def _size(size: list[float] | None, scene: SceneSummary) -> None:
         raise _Refuse(f"size ({width:g}, {depth:g}, {height:g}) m: every side at least 2 cm")
 
 
-def _position(position: list[float] | None, scene: SceneSummary) -> None:
+def _position(position: list[float] | None, scene: PlannerSceneSummary) -> None:
     if position is None:
         return
     x, y = position[0], position[1]
@@ -227,7 +227,7 @@ def _position(position: list[float] | None, scene: SceneSummary) -> None:
         raise _Refuse(f"height {position[2]:g} m is below the floor or above the ceiling")
 
 
-def default_add_id(scene: SceneSummary) -> Callable[[dict[str, Any], set[str]], str]:
+def default_add_id(scene: PlannerSceneSummary) -> Callable[[dict[str, Any], set[str]], str]:
     """The default namer of added objects: ``<room>.refine.<noun>_<n>``."""
 
     def name(op: dict[str, Any], taken: set[str]) -> str:
@@ -237,7 +237,7 @@ def default_add_id(scene: SceneSummary) -> Callable[[dict[str, Any], set[str]], 
     return name
 
 
-def add_room(op: dict[str, Any], scene: SceneSummary) -> str | None:
+def add_room(op: dict[str, Any], scene: PlannerSceneSummary) -> str | None:
     """The room an add goes to: its ``room``, its first relation target's, its position's, the
     only room."""
     if op.get("room"):

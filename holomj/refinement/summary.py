@@ -52,7 +52,7 @@ class ObjectInfo:
 
 
 @dataclass
-class SceneSummary:
+class PlannerSceneSummary:
     """What a planner knows of a scene (see the module docstring)."""
 
     rooms: list[RoomInfo]

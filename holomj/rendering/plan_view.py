@@ -32,7 +32,7 @@ FADE = 0.3  # blend the render this much towards white so the drawing stands out
 
 
 @dataclass(frozen=True)
-class PlanObject:
+class PlanViewObject:
     """An object as the plan draws it: its id, footprint and whether it rests on another."""
 
     id: str
@@ -41,7 +41,7 @@ class PlanObject:
 
 
 @dataclass(frozen=True)
-class Opening:
+class PlanViewOpening:
     """A door or window as a segment on its wall (world x/y)."""
 
     id: str
@@ -50,7 +50,7 @@ class Opening:
     end: tuple[float, float]
 
 
-def openings(scene: SceneSpec) -> list[Opening]:
+def openings(scene: SceneSpec) -> list[PlanViewOpening]:
     """Every door and window of ``scene`` as a segment on the wall it sits in."""
     walls = scene.walls
     result = []
@@ -61,7 +61,7 @@ def openings(scene: SceneSpec) -> list[Opening]:
             width, kind = item.width, "window"
         wall, t = find_wall_for_opening(walls, item.rooms, item.position, width)
         start, end = wall.point_at(t - width / 2), wall.point_at(t + width / 2)
-        result.append(Opening(item.id, kind, start, end))
+        result.append(PlanViewOpening(item.id, kind, start, end))
     return result
 
 
@@ -77,7 +77,7 @@ def draw_plan(
     top: Image.Image,
     camera: TopCamera,
     scene: SceneSpec,
-    objects: Sequence[PlanObject],
+    objects: Sequence[PlanViewObject],
 ) -> Image.Image:
     """The annotated plan drawn over the top-down render ``top`` (made with ``camera``), with
     a legend strip below it (the plan is taller than ``top`` by the strip; pixels above the

@@ -16,7 +16,7 @@ from shapely.geometry import Point, Polygon
 
 from holomj.mjcf import names
 from holomj.rendering.cameras import CameraPose, Mass, TopCamera, closeup_camera, room_camera
-from holomj.rendering.plan_view import PlanObject
+from holomj.rendering.plan_view import PlanViewObject
 from holomj.rendering.source import RenderScene
 from holomj.rendering.views import ViewJob
 from holomj.spec.scene import SceneSpec
@@ -111,11 +111,11 @@ def _room_of(
     return None
 
 
-def plan_objects(rs: RenderScene) -> list[PlanObject]:
+def plan_objects(rs: RenderScene) -> list[PlanViewObject]:
     """Every object's footprint on the plan, small ones (resting on another) marked."""
     result = []
     for obj in rs.scene.objects:
         footprint = rs.footprint(obj.id)
         if footprint is not None:
-            result.append(PlanObject(obj.id, footprint, obj.support is not None))
+            result.append(PlanViewObject(obj.id, footprint, obj.support is not None))
     return result

@@ -93,7 +93,7 @@ class JointFraction(Condition):
 
 
 @dataclass(frozen=True)
-class Surface:
+class TaskSurface:
     """A receptacle surface fixed to a body (it moves with it)."""
 
     body: int
@@ -240,7 +240,9 @@ def success_check(task: Task, model: mujoco.MjModel, record: dict[str, Any]) -> 
     return SuccessCheck(condition_for(task, model, record), task.hold_s)
 
 
-def _surfaces(model: mujoco.MjModel, receptacle: dict[str, Any], goal: PlaceGoal) -> list[Surface]:
+def _surfaces(
+    model: mujoco.MjModel, receptacle: dict[str, Any], goal: PlaceGoal
+) -> list[TaskSurface]:
     """The goal's candidate surfaces, in their body's frame at the model's initial pose."""
     key = "interior_surfaces" if goal.interior else "surfaces"
     records = receptacle.get(key, [])
@@ -259,11 +261,11 @@ def _surfaces(model: mujoco.MjModel, receptacle: dict[str, Any], goal: PlaceGoal
         body = body_id(model, record.get("body") or receptacle["body"])
         world = np.array([[x, y, record["height"]] for x, y in record["polygon"]], dtype=float)
         rot = initial.xmat[body].reshape(3, 3)
-        surfaces.append(Surface(body, (world - initial.xpos[body]) @ rot))
+        surfaces.append(TaskSurface(body, (world - initial.xpos[body]) @ rot))
     return surfaces
 
 
-def world_polygon(data: mujoco.MjData, surface: Surface) -> np.ndarray:
+def world_polygon(data: mujoco.MjData, surface: TaskSurface) -> np.ndarray:
     """A surface's polygon vertices (n, 3) in the world at ``data``'s pose."""
     rot = data.xmat[surface.body].reshape(3, 3)
     return np.asarray(surface.local @ rot.T + data.xpos[surface.body])

@@ -42,7 +42,7 @@ from holomj.evaluation.attributes import (
 )
 from holomj.evaluation.fidelity import Scorer, score_folder
 from holomj.evaluation.folder import MeasuredFolder
-from holomj.evaluation.objects import Opening, SceneObject, SceneRoom
+from holomj.evaluation.objects import EvaluatedObject, EvaluatedRoom, Opening
 from holomj.evaluation.reachability import reachability
 from holomj.evaluation.relations import RELATIONS, Verdict
 from holomj.evaluation.specs import load_specs
@@ -54,10 +54,10 @@ VOCABULARY_FILE = default_vocabulary_file()
 __all__ = [
     "RELATIONS",
     "VOCABULARY_FILE",
+    "EvaluatedObject",
+    "EvaluatedRoom",
     "MeasuredFolder",
     "Opening",
-    "SceneObject",
-    "SceneRoom",
     "Scorer",
     "Verdict",
     "Vocabulary",

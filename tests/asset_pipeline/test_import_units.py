@@ -10,17 +10,17 @@ import trimesh
 
 from asset_pipeline import physical
 from asset_pipeline.hulls import HULL_VERTEX_CAP, postprocess
-from asset_pipeline.load import Material, Part
+from asset_pipeline.load import MeshMaterial, MeshPart
 from asset_pipeline.normalise import normalise
 from asset_pipeline.objfile import obj_bytes
 from asset_pipeline.proximity import MeshProximity
 from asset_pipeline.repair import repair
 
-GREY = Material(rgba=(0.5, 0.5, 0.5, 1.0))
+GREY = MeshMaterial(rgba=(0.5, 0.5, 0.5, 1.0))
 
 
-def _part(mesh: trimesh.Trimesh, material: Material = GREY) -> Part:
-    return Part(np.asarray(mesh.vertices, float), np.asarray(mesh.faces), None, material)
+def _part(mesh: trimesh.Trimesh, material: MeshMaterial = GREY) -> MeshPart:
+    return MeshPart(np.asarray(mesh.vertices, float), np.asarray(mesh.faces), None, material)
 
 
 def test_y_up_and_front_are_turned_to_z_up_and_plus_x() -> None:
@@ -51,25 +51,27 @@ def test_repair_fixes_winding_and_inside_out_bodies() -> None:
     box = trimesh.creation.box(extents=(0.3, 0.3, 0.3))
     faces = np.asarray(box.faces).copy()
     faces[:4] = faces[:4, ::-1]  # inconsistent winding
-    broken = Part(np.asarray(box.vertices, float), faces, None, GREY)
+    broken = MeshPart(np.asarray(box.vertices, float), faces, None, GREY)
     result = repair([broken])
     assert result.watertight and result.winding_consistent
     assert result.physics.volume == pytest.approx(0.027)
     assert result.stats["faces_flipped"] > 0
-    inside_out = Part(np.asarray(box.vertices, float), np.asarray(box.faces)[:, ::-1], None, GREY)
+    inside_out = MeshPart(
+        np.asarray(box.vertices, float), np.asarray(box.faces)[:, ::-1], None, GREY
+    )
     result = repair([inside_out])
     assert result.stats["bodies_inverted"] == 1
     assert result.physics.volume == pytest.approx(0.027)
 
 
 def test_repair_merges_parts_by_material_and_drops_degenerate_faces() -> None:
-    red = Material(rgba=(1.0, 0.0, 0.0, 1.0))
+    red = MeshMaterial(rgba=(1.0, 0.0, 0.0, 1.0))
     a = trimesh.creation.box(extents=(0.1, 0.1, 0.1))
     b = a.copy()
     b.apply_translation((0.2, 0, 0))
     c = a.copy()
     c.apply_translation((0.4, 0, 0))
-    degenerate = Part(np.zeros((3, 3)), np.array([[0, 1, 2]]), None, GREY)
+    degenerate = MeshPart(np.zeros((3, 3)), np.array([[0, 1, 2]]), None, GREY)
     result = repair([_part(a), _part(b, red), _part(c), degenerate])
     assert [v.material.rgba for v in result.visuals] == [GREY.rgba, red.rgba]
     assert len(result.visuals[0].faces) == 24

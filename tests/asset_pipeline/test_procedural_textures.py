@@ -23,7 +23,7 @@ from asset_pipeline.procedural.kit import (
     block,
 )
 from asset_pipeline.procedural.obj_writer import obj_bytes
-from asset_pipeline.procedural.parts import Material
+from asset_pipeline.procedural.parts import RecipeMaterial
 from asset_pipeline.procedural.textures import (
     PATTERNS,
     box_uv,
@@ -45,21 +45,21 @@ from holomj.mjcf.textures import pattern_mean
         (CONCRETE, "concrete"),
         (WHITE_LACQUER, None),
         (BRASS, None),
-        (Material("marble", (0.9, 0.9, 0.9, 1.0)), "marble"),
-        (Material("plush_honey", (0.8, 0.6, 0.3, 1.0)), "velvet"),
+        (RecipeMaterial("marble", (0.9, 0.9, 0.9, 1.0)), "marble"),
+        (RecipeMaterial("plush_honey", (0.8, 0.6, 0.3, 1.0)), "velvet"),
         # A finish asked for by attribute names the look in its label.
         (
-            Material("grey_fabric__red_leather", (0.6, 0.1, 0.1, 1.0), label="red leather"),
+            RecipeMaterial("grey_fabric__red_leather", (0.6, 0.1, 0.1, 1.0), label="red leather"),
             "leather",
         ),
-        (Material("oak__lacquered", (0.6, 0.4, 0.3, 1.0), label="lacquered"), None),
-        (Material("oak__red", (0.6, 0.1, 0.1, 1.0), label="red"), "wood"),
+        (RecipeMaterial("oak__lacquered", (0.6, 0.4, 0.3, 1.0), label="lacquered"), None),
+        (RecipeMaterial("oak__red", (0.6, 0.1, 0.1, 1.0), label="red"), "wood"),
         # The explicit switch wins either way.
         (dataclasses.replace(OAK, pattern="plain"), None),
         (dataclasses.replace(BRASS, pattern="leather"), "leather"),
     ],
 )
-def test_materials_wear_the_pattern_their_words_name(material: Material, pattern) -> None:
+def test_materials_wear_the_pattern_their_words_name(material: RecipeMaterial, pattern) -> None:
     assert pattern_of(material) == pattern
 
 

@@ -365,7 +365,7 @@ def test_colour_and_material_from_asset_metadata(tmp_path: Path) -> None:
         "description": "a navy blue desk with black metal legs",
         "visual": [{"mesh": "navy_lacquer.obj", "rgba": [0.16, 0.21, 0.32, 1.0]}],
     }
-    obj = score.SceneObject(
+    obj = score.EvaluatedObject(
         id="d",
         labels={"desk"},
         room=None,

@@ -29,20 +29,20 @@ from holomj.refinement.goals import instruction_spec, refine_score
 from holomj.refinement.instruction import read_instruction
 from holomj.refinement.offline import propose, signature
 from holomj.refinement.safety import MAX_OPS_PER_ROUND, check_reply, looks_like_code
-from holomj.refinement.summary import ObjectInfo, RoomInfo, SceneSummary
+from holomj.refinement.summary import ObjectInfo, PlannerSceneSummary, RoomInfo
 from tests.plan.llm_replay import replay_server
 
 PROMPT = "a living room with a sofa, a coffee table and a tv"
 INSTRUCTION = "add a reading corner with an armchair and a floor lamp by the window"
 
 
-def summary() -> SceneSummary:
+def summary() -> PlannerSceneSummary:
     """A 5 x 4 m living room with a window and a door, a sofa, a coffee table, a tv, a mug."""
 
     def obj(oid: str, category: str, x: float, y: float, **extra: object) -> ObjectInfo:
         return ObjectInfo(oid, category, "living_room", (x, y, 0.0), 0.0, (1.0, 1.0, 1.0), **extra)  # type: ignore[arg-type]
 
-    return SceneSummary(
+    return PlannerSceneSummary(
         rooms=[
             RoomInfo(
                 "living_room",

@@ -19,7 +19,7 @@ from holomj.layout.solve import LayoutResult, solve_room
 from tests.conftest import FIXTURES
 
 ROOT = Path(__file__).resolve().parents[2]
-TH = geo.Thresholds()
+TH = geo.LayoutThresholds()
 
 
 def living_room() -> dict:

@@ -14,7 +14,7 @@ from holomj.rendering.plan_view import (
     ROOM_COLOR,
     SMALL_COLOR,
     WINDOW_COLOR,
-    PlanObject,
+    PlanViewObject,
     _label_spot,
     _scale_bar_metres,
     draw_plan,
@@ -32,8 +32,8 @@ def _near(pixels: np.ndarray, at: tuple[float, float], color: tuple[int, ...], r
 def plan(two_room_scene):
     camera = top_camera((-0.2, -0.2, 7.2, 5.2), 640, 480, two_room_scene.wall_height)
     objects = [
-        PlanObject("table", box(1.4, 0.8, 2.6, 1.6), small=False),
-        PlanObject("cube", box(1.95, 1.15, 2.05, 1.25), small=True),
+        PlanViewObject("table", box(1.4, 0.8, 2.6, 1.6), small=False),
+        PlanViewObject("cube", box(1.95, 1.15, 2.05, 1.25), small=True),
     ]
     white = Image.new("RGB", (640, 480), "white")
     image = draw_plan(white, camera, two_room_scene, objects)

@@ -39,7 +39,7 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design
 from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder
@@ -49,7 +49,9 @@ APPLIANCE_DOOR_DENSITY = 250.0  # kg/m^3 of door volume: insulated sheet-metal d
 RACK_DENSITY = 400.0
 
 
-def _shelves(cavity: Cavity, count: int, material: Material, behind: tuple[str, ...]) -> list[Part]:
+def _shelves(
+    cavity: Cavity, count: int, material: RecipeMaterial, behind: tuple[str, ...]
+) -> list[Part]:
     """``count`` thin shelves evenly up a compartment (interior surfaces)."""
     parts: list[Part] = []
     height = cavity.z1 - cavity.z0
@@ -170,8 +172,8 @@ def _drop_door(
     y: tuple[float, float],
     z: tuple[float, float],
     thickness: float,
-    finish: Material,
-    metal: Material,
+    finish: RecipeMaterial,
+    metal: RecipeMaterial,
     window: bool,
 ) -> tuple[list[Part], Link]:
     """A door hinged at its bottom edge that drops open forwards to 90 degrees, held at any
@@ -202,8 +204,8 @@ def _oven_box(
     y: tuple[float, float],
     z: tuple[float, float],
     rng: Rng,
-    finish: Material,
-    metal: Material,
+    finish: RecipeMaterial,
+    metal: RecipeMaterial,
 ) -> tuple[list[Part], Link]:
     """An oven: a carcass open at the front between ``z``, a drop-down glass door and one
     wire rack (the oven floor and the rack are interior surfaces)."""

@@ -51,7 +51,7 @@ from asset_pipeline.procedural.asset_records import (
     meta_round,
     surface_record,
 )
-from asset_pipeline.procedural.parts import Collider, Mesh, Part, Surface, Vec3
+from asset_pipeline.procedural.parts import Collider, Mesh, Part, RecipeSurface, Vec3
 from holomj.spec.assets import AssetMeta, CollisionPart, SupportSurface, VisualPart
 from holomj.spec.base import validate_model
 
@@ -306,7 +306,7 @@ def _bounds_of(part: Part) -> list[tuple[np.ndarray, np.ndarray]]:
     return boxes
 
 
-def _clearance(surface: Surface, boxes: list[tuple[np.ndarray, np.ndarray]]) -> float:
+def _clearance(surface: RecipeSurface, boxes: list[tuple[np.ndarray, np.ndarray]]) -> float:
     xy = np.asarray(surface.polygon)
     (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
     h = surface.height

@@ -40,7 +40,7 @@ from asset_pipeline.procedural.kit import (
     square_legs,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design
 from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder
@@ -63,8 +63,8 @@ class Shell:
 def shell(
     size: Vec3,
     rng: Rng,
-    body: Material,
-    top: Material,
+    body: RecipeMaterial,
+    top: RecipeMaterial,
     top_t: float,
     base: str,
     *,
@@ -92,7 +92,7 @@ def shell(
     return Shell(parts, cavity, face, (base_h + 0.003, h - top_t - 0.003))
 
 
-def _rail(cavity: Cavity, z: float, material: Material) -> Part:
+def _rail(cavity: Cavity, z: float, material: RecipeMaterial) -> Part:
     """A horizontal carcass panel centred at ``z`` across a cavity."""
     return block(
         (cavity.x0, cavity.x1),
@@ -107,9 +107,9 @@ def cupboard(
     z: tuple[float, float],
     cavity: Cavity,
     doors: int,
-    body: Material,
-    front: Material,
-    handle: Material,
+    body: RecipeMaterial,
+    front: RecipeMaterial,
+    handle: RecipeMaterial,
     handle_z: float,
     rng: Rng,
     *,
@@ -145,9 +145,9 @@ def _split(cavity: Cavity, z: float) -> tuple[Cavity, Cavity]:
 def doors_under_drawers(
     sh: Shell,
     rng: Rng,
-    body: Material,
-    front: Material,
-    handle: Material,
+    body: RecipeMaterial,
+    front: RecipeMaterial,
+    handle: RecipeMaterial,
     doors: int,
     drawer_h: float | None,
     handle_z: float,

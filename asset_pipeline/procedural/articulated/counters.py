@@ -37,7 +37,7 @@ from asset_pipeline.procedural.kit import (
     pick,
     uniform,
 )
-from asset_pipeline.procedural.parts import Material, Part, Vec3
+from asset_pipeline.procedural.parts import Part, RecipeMaterial, Vec3
 from asset_pipeline.procedural.registry import Design
 from asset_pipeline.procedural.roles import tagged
 from asset_pipeline.procedural.round_parts import Cylinder
@@ -84,7 +84,7 @@ def kitchen_counter(size: Vec3, rng: Rng) -> Design:
     return Design(tuple(sh.parts + made), words)
 
 
-def _faucet(x_back: float, y: float, z: float, height: float, metal: Material) -> list[Part]:
+def _faucet(x_back: float, y: float, z: float, height: float, metal: RecipeMaterial) -> list[Part]:
     """A faucet standing at (x_back, y) on height z: a column and a spout reaching +X."""
     r = 0.015
     return [

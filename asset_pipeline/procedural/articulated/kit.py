@@ -23,7 +23,7 @@ from asset_pipeline.procedural.articulated.links import (
     side_hinge,
 )
 from asset_pipeline.procedural.kit import block
-from asset_pipeline.procedural.parts import Box, Material, Part
+from asset_pipeline.procedural.parts import Box, Part, RecipeMaterial
 from asset_pipeline.procedural.roles import tagged
 
 Rng = np.random.Generator
@@ -61,7 +61,7 @@ def handle(
     z: float,
     length: float,
     vertical: bool,
-    material: Material,
+    material: RecipeMaterial,
     pull: tuple[float, float, float] = (1.0, 0.0, 0.0),
 ) -> tuple[list[Part], HandleDesign]:
     """A bar handle on a front whose face is at ``x_front`` (facing +X): two posts and a bar
@@ -100,7 +100,7 @@ def carcass(
     x: tuple[float, float],
     y: tuple[float, float],
     z: tuple[float, float],
-    material: Material,
+    material: RecipeMaterial,
     *,
     top: bool = True,
     bottom: bool = True,
@@ -125,7 +125,9 @@ def carcass(
     return panels, Cavity(x0 + BACK, x1, y0 + t, y1 - t, inner_z0, inner_z1)
 
 
-def shelf(cavity: Cavity, z: float, material: Material, behind: tuple[str, ...]) -> list[Part]:
+def shelf(
+    cavity: Cavity, z: float, material: RecipeMaterial, behind: tuple[str, ...]
+) -> list[Part]:
     """A shelf board with its top at ``z`` across ``cavity``, set back 2 cm from the face; its
     top is an interior surface reached through ``behind``."""
     board = block(
@@ -138,7 +140,7 @@ def shelf(cavity: Cavity, z: float, material: Material, behind: tuple[str, ...])
     return tagged("shelves", inside(behind, [board]))
 
 
-def floor_surface(cavity: Cavity, material: Material, behind: tuple[str, ...]) -> list[Part]:
+def floor_surface(cavity: Cavity, material: RecipeMaterial, behind: tuple[str, ...]) -> list[Part]:
     """A thin liner on a compartment's floor whose top is an interior surface (the floor of a
     cupboard); it lies on the bottom panel, inside the cavity."""
     liner = block(
@@ -157,8 +159,8 @@ def door(
     y: tuple[float, float],
     z: tuple[float, float],
     hinge_at: str,
-    front: Material,
-    handle_material: Material,
+    front: RecipeMaterial,
+    handle_material: RecipeMaterial,
     handle_z: float,
     *,
     thickness: float = FRONT_T,
@@ -189,9 +191,9 @@ def drawer(
     front_y: tuple[float, float],
     front_z: tuple[float, float],
     cell: Cavity,
-    front: Material,
-    box: Material,
-    handle_material: Material,
+    front: RecipeMaterial,
+    box: RecipeMaterial,
+    handle_material: RecipeMaterial,
     *,
     knob: bool = False,
 ) -> tuple[list[Part], Link]:
@@ -234,10 +236,10 @@ def drawer_stack(
     z: tuple[float, float],
     rows: int,
     columns: int,
-    carcass_material: Material,
-    front: Material,
-    box: Material,
-    handle_material: Material,
+    carcass_material: RecipeMaterial,
+    front: RecipeMaterial,
+    box: RecipeMaterial,
+    handle_material: RecipeMaterial,
     *,
     knob: bool = False,
     first: int = 0,
@@ -311,8 +313,8 @@ def door_pair(
     y: tuple[float, float],
     z: tuple[float, float],
     count: int,
-    front: Material,
-    handle_material: Material,
+    front: RecipeMaterial,
+    handle_material: RecipeMaterial,
     handle_z: float,
     rng: Rng,
     *,

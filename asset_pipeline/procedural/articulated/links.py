@@ -25,10 +25,10 @@ import numpy as np
 
 from asset_pipeline.procedural.parts import (
     Collider,
-    Material,
     Mesh,
     Part,
-    Surface,
+    RecipeMaterial,
+    RecipeSurface,
     Vec3,
     Vec4,
     add3,
@@ -122,7 +122,7 @@ class Moving:
 
     part: Part
     link: Link
-    material: Material = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
+    material: RecipeMaterial = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
 
     def __post_init__(self) -> None:
         inner = self.part.material
@@ -140,7 +140,7 @@ class Moving:
     def bounds(self) -> tuple[Vec3, Vec3] | None:
         return self.part.bounds()
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         return self.part.surfaces()
 
     def translated(self, offset: Vec3) -> Moving:
@@ -159,7 +159,7 @@ class Inside:
 
     part: Part
     behind: tuple[str, ...]
-    material: Material = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
+    material: RecipeMaterial = field(default=None)  # type: ignore[assignment]  # None: the wrapped part's
 
     def __post_init__(self) -> None:
         inner = self.part.material
@@ -177,7 +177,7 @@ class Inside:
     def bounds(self) -> tuple[Vec3, Vec3] | None:
         return self.part.bounds()
 
-    def surfaces(self) -> list[Surface]:
+    def surfaces(self) -> list[RecipeSurface]:
         return self.part.surfaces()
 
     def translated(self, offset: Vec3) -> Inside:

@@ -46,7 +46,7 @@ from holomj.physics.spawn import (
     LIFT_CAP_M,
     landing_problem,
 )
-from holomj.physics.standing.prepass import Surface, receptacle_surfaces
+from holomj.physics.standing.prepass import DropSurface, receptacle_surfaces
 from holomj.physics.surfaces_world import footprint, footprint_polygon, object_yaw
 from holomj.spec.assets import AssetMeta
 from holomj.spec.scene import SceneObject
@@ -345,7 +345,7 @@ def _failure(result: Dropped, parent: str) -> str:
 
 
 def _spots(
-    surfaces: list[Surface],
+    surfaces: list[DropSurface],
     target: tuple[float, float],
     wanted: float,
     half: tuple[float, float],
@@ -381,7 +381,7 @@ def _spots(
 
 
 def _fitting_spots(
-    surface: Surface, target: tuple[float, float], half: tuple[float, float], yaw: float
+    surface: DropSurface, target: tuple[float, float], half: tuple[float, float], yaw: float
 ) -> list[tuple[float, float]]:
     """Spots on ``surface`` where the footprint at ``yaw`` fits, closest to ``target`` first."""
     polygon = surface.world.polygon
@@ -451,7 +451,7 @@ def _tilt_deg(quat: tuple[float, float, float, float]) -> float:
 
 def _judge(
     world: DropWorld,
-    surface: Surface,
+    surface: DropSurface,
     rec_bodies: frozenset[int],
     upright: bool,
     before: dict[str, np.ndarray],

@@ -54,7 +54,7 @@ UNDER_M = 0.15  # ... and this far under every surface of its parent stands on t
 
 
 @dataclass(frozen=True)
-class Surface:
+class DropSurface:
     """A support surface in the world; ``box_top`` when the asset has no surfaces and the top
     of its bounding box stands in (a drop may then land lower, e.g. on a sofa's seat)."""
 
@@ -62,10 +62,10 @@ class Surface:
     box_top: bool = False
 
 
-def receptacle_surfaces(obj: SceneObject, meta: AssetMeta) -> list[Surface]:
+def receptacle_surfaces(obj: SceneObject, meta: AssetMeta) -> list[DropSurface]:
     """The support surfaces of ``obj`` at its pose; the top of its bounding box when its asset
     has none."""
-    surfaces = [Surface(s) for s in world_surfaces(obj, meta)]
+    surfaces = [DropSurface(s) for s in world_surfaces(obj, meta)]
     if surfaces:
         return surfaces
     sx, sy, sz = obj.scale3
@@ -75,7 +75,7 @@ def receptacle_surfaces(obj: SceneObject, meta: AssetMeta) -> list[Surface]:
     )
     x, y, z = obj.position
     polygon = orient(footprint_polygon(half, x, y, object_yaw(obj)), 1.0)
-    return [Surface(WorldSurface(-1, z + meta.size[2] * sz, polygon, math.inf), box_top=True)]
+    return [DropSurface(WorldSurface(-1, z + meta.size[2] * sz, polygon, math.inf), box_top=True)]
 
 
 @dataclass
@@ -134,7 +134,7 @@ def prepare(
 
 
 def _rest(
-    obj: SceneObject, lowest: float, surfaces: dict[str, list[Surface]], out: Prepared
+    obj: SceneObject, lowest: float, surfaces: dict[str, list[DropSurface]], out: Prepared
 ) -> SceneObject:
     """Step 1 (on a receptacle) or step 2 (on the floor) for one free object."""
     if lowest > FLOOR_TOLERANCE_M:
@@ -152,7 +152,7 @@ def _rest(
 
 
 def _surface_below(
-    obj: SceneObject, lowest: float, surfaces: dict[str, list[Surface]]
+    obj: SceneObject, lowest: float, surfaces: dict[str, list[DropSurface]]
 ) -> str | None:
     point = Point(obj.position[0], obj.position[1])
     best: tuple[float, str] | None = None

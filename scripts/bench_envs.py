@@ -7,8 +7,8 @@ median reset time over ``--resets`` resets, and environment steps per second wit
 over ``--steps`` steps (each step ``frame_skip`` physics steps plus the predicate), beside the
 raw ``mj_step`` rate of the same model; then ``--episodes`` episodes of ``--episode-steps``
 steps per task kind, half doing nothing and half random, counting false successes. With
-``--script`` it also runs the scripted policy on every open task (drawers and doors: tries,
-successes, steps). Writes JSON::
+``--script`` it also runs the scripted policies on every open and every close task (drawers and
+doors: tries, successes, steps). Writes JSON::
 
     python scripts/bench_envs.py OUT --out bench_results/envs.json [--steps 2000] [--script]
 """
@@ -27,7 +27,7 @@ import mujoco
 import numpy as np
 
 from holomj import envs
-from holomj.envs.scripted import open_part
+from holomj.envs.scripted import close_part, open_part
 from holomj.jobs.tasks import propose_folder_tasks
 from holomj.spec.tasks import ArticulationTask, Task
 
@@ -92,14 +92,15 @@ def raw_physics_rate(folder: Path, steps: int) -> float:
     return steps / (time.perf_counter() - start)
 
 
-def scripted(folder: Path, tasks: list[Task]) -> dict:
-    """The scripted policy on every open task (drawers and doors)."""
+def scripted(folder: Path, tasks: list[Task], kind: str = "open") -> dict:
+    """The scripted policy on every ``kind`` (open or close) task (drawers and doors)."""
+    policy = open_part if kind == "open" else close_part
     results = []
     for task in tasks:
-        if not (isinstance(task, ArticulationTask) and task.kind == "open"):
+        if not (isinstance(task, ArticulationTask) and task.kind == kind):
             continue
         start = time.perf_counter()
-        result = open_part(envs.make(folder, task, max_episode_steps=600))
+        result = policy(envs.make(folder, task, max_episode_steps=600))
         results.append(
             {
                 "task": task.id,
@@ -123,7 +124,9 @@ def main() -> int:
     parser.add_argument("--resets", type=int, default=50)
     parser.add_argument("--episodes", type=int, default=100, help="per kind, for false successes")
     parser.add_argument("--episode-steps", type=int, default=100)
-    parser.add_argument("--script", action="store_true", help="run the scripted open policy")
+    parser.add_argument(
+        "--script", action="store_true", help="run the scripted open and close policies"
+    )
     args = parser.parse_args()
     tasks = list(propose_folder_tasks(args.folder, limit=1000, write=False).tasks)
     first: dict[str, Task] = {}
@@ -143,7 +146,8 @@ def main() -> int:
         },
     }
     if args.script:
-        result["scripted_open"] = scripted(args.folder, tasks)
+        result["scripted_open"] = scripted(args.folder, tasks, "open")
+        result["scripted_close"] = scripted(args.folder, tasks, "close")
     text = json.dumps(result, indent=2) + "\n"
     if args.out is None:
         sys.stdout.write(text)

@@ -26,8 +26,7 @@ from dataclasses import dataclass, field
 from functools import cache
 from typing import Any
 
-from holomj.library.store import normalise_category
-from holomj.spec.categories import KnownKind, knowledge_kinds
+from holomj.spec.categories import KnownKind, knowledge_kinds, normalise_category
 
 Size = tuple[float, float, float]  # x = depth, y = width, z = height, metres
 

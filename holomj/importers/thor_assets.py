@@ -26,7 +26,7 @@ from functools import cache
 from importlib import resources
 
 from holomj.importers.frames import triple
-from holomj.library.store import normalise_category
+from holomj.spec.categories import normalise_category
 
 Size = tuple[float, float, float]
 

@@ -15,7 +15,8 @@ from typing import Any, Literal, cast, get_args
 
 from holomj.errors import InputError
 from holomj.jobs.library import resolve_library
-from holomj.library.store import AssetLibrary, normalise_category
+from holomj.library.store import AssetLibrary
+from holomj.spec.categories import normalise_category
 
 UpAxis = Literal["y", "z"]
 Front = Literal["+x", "-x", "+y", "-y"]

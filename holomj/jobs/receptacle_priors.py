@@ -26,8 +26,8 @@ import numpy as np
 
 from holomj.errors import InputError
 from holomj.importers.thor_assets import thor_category, thor_stand_ins
-from holomj.library.store import AssetLibrary, normalise_category
-from holomj.spec.categories import receptacle_table
+from holomj.library.store import AssetLibrary
+from holomj.spec.categories import normalise_category, receptacle_table
 
 DEFAULT_COUNT = 3
 MAX_SAME = 2

@@ -41,8 +41,9 @@ from pydantic import Field
 from shapely.geometry import Polygon
 
 from holomj.errors import SpecError, closest_names
-from holomj.layout.floorplan import ENTRANCE_PREFERENCE, normal_type
+from holomj.layout.floorplan import ENTRANCE_PREFERENCE
 from holomj.spec.base import FrozenModel
+from holomj.spec.categories import normal_type
 from holomj.spec.scene import Door, Room, Window
 from holomj.spec.walls import Wall, derive_walls, find_wall_for_opening
 

@@ -55,7 +55,6 @@ from pydantic import Field
 from shapely.geometry import Polygon
 
 from holomj.layout.ceiling_lights import ceiling_lights
-from holomj.layout.floorplan import normal_type
 from holomj.layout.wall_faces import (
     CEILING_GAP_M,
     END_MARGIN_M,
@@ -74,6 +73,7 @@ from holomj.layout.wall_faces import (
 from holomj.layout.wall_spots import place_above, place_faced, place_free
 from holomj.layout.window_dressing import DRESSING_KINDS, DressingRequest, dress_windows
 from holomj.spec.base import FrozenModel, Identifier, PositiveFloat
+from holomj.spec.categories import normal_type
 from holomj.spec.scene import Door, Room, Window
 from holomj.spec.walls import Wall
 

@@ -9,8 +9,8 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from holomj.layout.floorplan import normal_type
 from holomj.spec.base import FrozenModel, Identifier
+from holomj.spec.categories import normal_type
 from holomj.spec.plan import ObjectName, Size3
 
 Phrase = Annotated[str, Field(min_length=1, max_length=64, pattern=r"^[a-z0-9]+( [a-z0-9]+)*$")]

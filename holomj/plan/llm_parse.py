@@ -13,7 +13,6 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from holomj.layout.constraints import constraints_to_text, parse_constraint_text
-from holomj.layout.floorplan import normal_type
 from holomj.plan.llm_answers import (
     ConstraintsAnswer,
     DoorsAnswer,
@@ -25,6 +24,7 @@ from holomj.plan.llm_answers import (
     WindowsAnswer,
 )
 from holomj.plan.llm_json import LLMResponseError, parse_answer, plan_errors
+from holomj.spec.categories import normal_type
 from holomj.spec.plan import PlanObject, PlanSmallObject, PlanWindows
 
 ROOM_SIDE_M = (2.5, 8.0)

@@ -20,7 +20,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from holomj.library.store import LibraryAsset, normalise_category
+from holomj.library.store import LibraryAsset
+from holomj.spec.categories import normalise_category
 
 FULL_PRODUCT_SHARE = 0.25
 """Above this share of the index, the approximate scores come from one product with the whole
